@@ -1,0 +1,82 @@
+#pragma once
+/// @file validate_input.h
+/// First stage of the pipeline: check that two meshes and their anchors can be processed
+/// (closed, manifold, connected, oriented triangle surfaces of the same genus with enough
+/// corresponding anchors), and report what was found.
+
+#include <string>
+#include <vector>
+
+#include "cbd/anchors.h"
+#include "cbd/mesh.h"
+#include "cbd/status.h"
+
+namespace cbd {
+
+/// Options of `validateMesh` / `validateInput`.
+struct ValidationOptions {
+  double degenerateAreaRelative = 1e-14;  ///< a face is degenerate when its area is below this
+                                          ///< times the squared bounding-box diagonal
+  double snapTolerance = 0.01;            ///< anchors farther from their nearest vertex than
+                                          ///< this fraction of the bbox diagonal are errors
+};
+
+/// What `validateMesh` found; `status` is the first problem, in the order of the checks.
+struct MeshReport {
+  Status status;
+  std::string name;               ///< the name used in messages ("source", "target", a path)
+  int vertices = 0;               ///< referenced vertices
+  int faces = 0;
+  int edges = 0;
+  int unreferencedVertices = 0;   ///< ignored with a warning
+  int components = 0;
+  int eulerCharacteristic = 0;    ///< V - E + F over referenced vertices
+  int genus = -1;                 ///< (2 - chi) / 2 for a closed connected surface, else -1
+  double bboxDiagonal = 0.0;
+  std::vector<std::string> warnings;
+};
+
+/// Check one mesh: finite coordinates; no degenerate or duplicate faces; every edge shared by
+/// exactly two faces (else OpenBoundary / NonManifoldEdge), traversed in opposite directions
+/// (else InconsistentOrientation); one fan of faces around every vertex (NonManifoldVertex);
+/// one connected component (MultipleComponents). Unreferenced vertices only warn. Every
+/// message names the mesh, the count and an example element (0-based indices as in the file).
+/// @param[in] hadPolygons from LoadResult: reported as NotTriangles.
+MeshReport validateMesh(const IndexedMesh& mesh, const std::string& name, bool hadPolygons = false,
+                        const ValidationOptions& options = {});
+
+/// Everything `validateInput` checked: both meshes and the matched anchors.
+struct InputReport {
+  Status status;
+  MeshReport source;
+  MeshReport target;
+  AnchorPairs anchors;  ///< matched and snapped anchors (valid when status is ok)
+};
+
+/// The input of the whole pipeline, as given by a caller.
+struct InputFiles {
+  std::string sourceMesh, targetMesh;
+  std::string sourceAnchors, targetAnchors;
+};
+
+/// Check a source/target pair with its anchors: both meshes valid, same genus (GenusMismatch),
+/// anchors matched by name (`matchAnchors`), snapped within tolerance (`snapAnchors`), at least
+/// three and enough for the genus (TooFewAnchors). The meshes are not modified.
+InputReport validateInput(const IndexedMesh& source, const IndexedMesh& target,
+                          const AnchorSet& sourceAnchors, const AnchorSet& targetAnchors,
+                          const ValidationOptions& options = {}, bool sourceHadPolygons = false,
+                          bool targetHadPolygons = false);
+
+/// Everything loaded and checked from files, for front ends (CLI, plugin scripts, benchmark).
+struct LoadedInput {
+  InputReport report;
+  Mesh sourceMesh, targetMesh;          ///< as loaded (with colours etc.)
+  IndexedMesh source, target;           ///< flat copies the algorithm reads
+  LoadResult sourceLoad, targetLoad;
+};
+
+/// Load both meshes and both anchor files, then `validateInput`. Any file error is returned
+/// in `report.status` with the path in the message.
+void loadAndValidate(const InputFiles& files, const ValidationOptions& options, LoadedInput& out);
+
+}  // namespace cbd

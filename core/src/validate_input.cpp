@@ -1,0 +1,332 @@
+#include "cbd/validate_input.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <sstream>
+
+namespace cbd {
+namespace {
+
+struct UnionFind {
+  std::vector<int> parent;
+  explicit UnionFind(int n) : parent(n) { std::iota(parent.begin(), parent.end(), 0); }
+  int find(int x) {
+    while (parent[x] != x) x = parent[x] = parent[parent[x]];
+    return x;
+  }
+  void unite(int a, int b) {
+    a = find(a), b = find(b);
+    if (a != b) parent[std::max(a, b)] = std::min(a, b);
+  }
+};
+
+std::string str(int v) { return std::to_string(v); }
+
+Status fail(ErrorCode code, const std::string& name, const std::string& what, const std::string& fix) {
+  return Status::error(code, name + " mesh: " + what + "; " + fix);
+}
+
+}  // namespace
+
+MeshReport validateMesh(const IndexedMesh& mesh, const std::string& name, bool hadPolygons,
+                        const ValidationOptions& options) {
+  MeshReport r;
+  r.name = name;
+  const int nv = mesh.vertexCount();
+  const int nf = mesh.faceCount();
+  r.faces = nf;
+  if (hadPolygons) {
+    r.status = fail(ErrorCode::NotTriangles, name, "the file has faces with more than three vertices",
+                    "triangulate it first (MeshLab: Filters > Polygonal and Quad Mesh > Turn into a Pure-Triangular mesh)");
+    return r;
+  }
+  if (nv == 0 || nf == 0) {
+    r.status = fail(ErrorCode::EmptyMesh, name, str(nv) + " vertices and " + str(nf) + " faces",
+                    "a closed triangle surface is needed");
+    return r;
+  }
+  std::vector<char> referenced(nv, 0);
+  for (int f = 0; f < nf; ++f) {
+    for (int v : mesh.faces[f]) {
+      if (v < 0 || v >= nv) {
+        r.status = Status::error(ErrorCode::MalformedMesh, name + " mesh: face " + str(f) +
+                                                               " refers to vertex " + str(v) +
+                                                               " which does not exist");
+        return r;
+      }
+      referenced[v] = 1;
+    }
+  }
+  r.vertices = static_cast<int>(std::count(referenced.begin(), referenced.end(), 1));
+  r.unreferencedVertices = nv - r.vertices;
+  if (r.unreferencedVertices > 0) {
+    int example = static_cast<int>(std::find(referenced.begin(), referenced.end(), 0) - referenced.begin());
+    r.warnings.push_back(name + " mesh: " + str(r.unreferencedVertices) +
+                         " unreferenced vertices ignored (e.g. vertex " + str(example) + ")");
+  }
+
+  // Finite coordinates.
+  {
+    int bad = 0, example = -1;
+    for (int v = 0; v < nv; ++v)
+      if (referenced[v] && !mesh.positions[v].allFinite()) {
+        if (example < 0) example = v;
+        ++bad;
+      }
+    if (bad) {
+      r.status = fail(ErrorCode::InvalidCoordinates, name,
+                      str(bad) + " vertices with NaN or infinite coordinates (e.g. vertex " + str(example) + ")",
+                      "repair or re-export the mesh");
+      return r;
+    }
+  }
+  {
+    Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
+    for (int v = 0; v < nv; ++v)
+      if (referenced[v]) lo = lo.cwiseMin(mesh.positions[v]), hi = hi.cwiseMax(mesh.positions[v]);
+    r.bboxDiagonal = (hi - lo).norm();
+  }
+
+  // Degenerate faces: repeated vertex or (near) zero area.
+  {
+    const double minArea2 = std::pow(options.degenerateAreaRelative * r.bboxDiagonal * r.bboxDiagonal, 2);
+    int bad = 0, example = -1;
+    for (int f = 0; f < nf; ++f) {
+      const auto& t = mesh.faces[f];
+      bool degenerate = t[0] == t[1] || t[1] == t[2] || t[0] == t[2];
+      if (!degenerate) {
+        const Vec3 n = (mesh.positions[t[1]] - mesh.positions[t[0]]).cross(mesh.positions[t[2]] - mesh.positions[t[0]]);
+        degenerate = 0.25 * n.squaredNorm() <= minArea2;
+      }
+      if (degenerate) {
+        if (example < 0) example = f;
+        ++bad;
+      }
+    }
+    if (bad) {
+      const auto& t = mesh.faces[example];
+      r.status = fail(ErrorCode::DegenerateFace, name,
+                      str(bad) + " degenerate (zero-area) faces (e.g. face " + str(example) + " on vertices " +
+                          str(t[0]) + ", " + str(t[1]) + ", " + str(t[2]) + ")",
+                      "remove them first (MeshLab: Filters > Cleaning and Repairing > Remove Zero Area Faces)");
+      return r;
+    }
+  }
+
+  // Duplicate faces.
+  {
+    std::vector<std::pair<std::array<int, 3>, int>> sorted(nf);
+    for (int f = 0; f < nf; ++f) {
+      auto t = mesh.faces[f];
+      std::sort(t.begin(), t.end());
+      sorted[f] = {t, f};
+    }
+    std::sort(sorted.begin(), sorted.end());
+    int bad = 0, exA = -1, exB = -1;
+    for (int i = 1; i < nf; ++i)
+      if (sorted[i].first == sorted[i - 1].first) {
+        if (exA < 0) exA = sorted[i - 1].second, exB = sorted[i].second;
+        ++bad;
+      }
+    if (bad) {
+      r.status = fail(ErrorCode::DuplicateFace, name,
+                      str(bad) + " duplicate faces (e.g. faces " + str(exA) + " and " + str(exB) +
+                          " use the same three vertices)",
+                      "remove them first (MeshLab: Filters > Cleaning and Repairing > Remove Duplicate Faces)");
+      return r;
+    }
+  }
+
+  // Edges: every undirected edge used by exactly two faces, in opposite directions.
+  struct HalfEdge {
+    int lo, hi, face;
+    bool forward;  // traversed lo -> hi
+    bool operator<(const HalfEdge& o) const {
+      return lo != o.lo ? lo < o.lo : hi != o.hi ? hi < o.hi : face < o.face;
+    }
+  };
+  std::vector<HalfEdge> he;
+  he.reserve(3 * static_cast<size_t>(nf));
+  for (int f = 0; f < nf; ++f)
+    for (int k = 0; k < 3; ++k) {
+      const int a = mesh.faces[f][k], b = mesh.faces[f][(k + 1) % 3];
+      he.push_back({std::min(a, b), std::max(a, b), f, a < b});
+    }
+  std::sort(he.begin(), he.end());
+  {
+    int boundary = 0, nonManifold = 0, flipped = 0;
+    const HalfEdge *exBoundary = nullptr, *exNonManifold = nullptr, *exFlipped = nullptr;
+    int edges = 0;
+    for (size_t i = 0; i < he.size();) {
+      size_t j = i;
+      while (j < he.size() && he[j].lo == he[i].lo && he[j].hi == he[i].hi) ++j;
+      const size_t count = j - i;
+      ++edges;
+      if (count == 1) {
+        ++boundary;
+        if (!exBoundary) exBoundary = &he[i];
+      } else if (count > 2) {
+        ++nonManifold;
+        if (!exNonManifold) exNonManifold = &he[i];
+      } else if (he[i].forward == he[i + 1].forward) {
+        ++flipped;
+        if (!exFlipped) exFlipped = &he[i];
+      }
+      i = j;
+    }
+    r.edges = edges;
+    if (nonManifold) {
+      r.status = fail(ErrorCode::NonManifoldEdge, name,
+                      str(nonManifold) + " non-manifold edges shared by more than two faces (e.g. edge " +
+                          str(exNonManifold->lo) + "-" + str(exNonManifold->hi) + ")",
+                      "repair it first (MeshLab: Filters > Cleaning and Repairing > Repair non Manifold Edges)");
+      return r;
+    }
+    if (boundary) {
+      r.status = fail(ErrorCode::OpenBoundary, name,
+                      str(boundary) + " boundary edges: the surface is not closed (e.g. edge " +
+                          str(exBoundary->lo) + "-" + str(exBoundary->hi) + " of face " + str(exBoundary->face) + ")",
+                      "close the holes first (MeshLab: Filters > Remeshing, Simplification and Reconstruction > Close Holes)");
+      return r;
+    }
+    if (flipped) {
+      r.status = fail(ErrorCode::InconsistentOrientation, name,
+                      str(flipped) + " edges whose two faces are inconsistently oriented (e.g. edge " +
+                          str(exFlipped->lo) + "-" + str(exFlipped->hi) + ")",
+                      "re-orient the faces first (MeshLab: Filters > Normals, Curvatures and Orientation > Re-Orient all faces coherentely)");
+      return r;
+    }
+  }
+
+  // Vertex manifoldness: the faces around each vertex form one fan (one cycle in the link).
+  {
+    std::vector<int> start(nv + 1, 0);
+    for (const auto& t : mesh.faces)
+      for (int v : t) ++start[v + 1];
+    for (int v = 0; v < nv; ++v) start[v + 1] += start[v];
+    std::vector<std::pair<int, int>> link(start[nv]);  // (next, prev) neighbour per corner
+    std::vector<int> fill(start.begin(), start.end() - 1);
+    for (const auto& t : mesh.faces)
+      for (int k = 0; k < 3; ++k) link[fill[t[k]]++] = {t[(k + 1) % 3], t[(k + 2) % 3]};
+    int bad = 0, example = -1;
+    std::vector<int> nbr;
+    for (int v = 0; v < nv; ++v) {
+      const int n = start[v + 1] - start[v];
+      if (n == 0) continue;
+      // Walk the link cycle from the first corner; a manifold vertex visits every corner.
+      nbr.assign(n, -1);
+      int visited = 1, cur = 0;
+      std::vector<char> seen(n, 0);
+      seen[0] = 1;
+      for (;;) {
+        const int want = link[start[v] + cur].first;  // the next corner has `want` as its prev
+        int next = -1;
+        for (int c = 0; c < n; ++c)
+          if (link[start[v] + c].second == want) { next = c; break; }
+        if (next < 0 || seen[next]) break;
+        seen[next] = 1;
+        ++visited;
+        cur = next;
+      }
+      if (visited != n) {
+        if (example < 0) example = v;
+        ++bad;
+      }
+    }
+    if (bad) {
+      r.status = fail(ErrorCode::NonManifoldVertex, name,
+                      str(bad) + " non-manifold vertices where several fans of faces meet (e.g. vertex " +
+                          str(example) + ")",
+                      "split them first (MeshLab: Filters > Cleaning and Repairing > Split Vertices on Non Manifold Faces)");
+      return r;
+    }
+  }
+
+  // Connected components.
+  {
+    UnionFind uf(nv);
+    for (const auto& t : mesh.faces) uf.unite(t[0], t[1]), uf.unite(t[1], t[2]);
+    std::vector<int> roots;
+    for (int v = 0; v < nv; ++v)
+      if (referenced[v] && uf.find(v) == v) roots.push_back(v);
+    r.components = static_cast<int>(roots.size());
+    if (r.components > 1) {
+      r.status = fail(ErrorCode::MultipleComponents, name,
+                      str(r.components) + " connected components (e.g. one contains vertex " + str(roots[0]) +
+                          ", another vertex " + str(roots[1]) + ")",
+                      "keep one surface (MeshLab: Filters > Cleaning and Repairing > Remove Isolated pieces)");
+      return r;
+    }
+  }
+
+  r.eulerCharacteristic = r.vertices - r.edges + r.faces;
+  r.genus = (2 - r.eulerCharacteristic) / 2;
+  return r;
+}
+
+InputReport validateInput(const IndexedMesh& source, const IndexedMesh& target,
+                          const AnchorSet& sourceAnchors, const AnchorSet& targetAnchors,
+                          const ValidationOptions& options, bool sourceHadPolygons, bool targetHadPolygons) {
+  InputReport r;
+  if (!(options.snapTolerance >= 0) || !(options.degenerateAreaRelative >= 0)) {
+    r.status = Status::error(ErrorCode::InvalidArgument, "snap tolerance and degenerate-area threshold must be >= 0");
+    return r;
+  }
+  r.source = validateMesh(source, "source", sourceHadPolygons, options);
+  if (!r.source.status) return r.status = r.source.status, r;
+  r.target = validateMesh(target, "target", targetHadPolygons, options);
+  if (!r.target.status) return r.status = r.target.status, r;
+  if (r.source.genus != r.target.genus) {
+    r.status = Status::error(ErrorCode::GenusMismatch,
+                             "the source mesh has genus " + std::to_string(r.source.genus) +
+                                 " and the target mesh genus " + std::to_string(r.target.genus) +
+                                 "; a cross-parameterization needs surfaces of the same topology");
+    return r;
+  }
+  if (!sourceAnchors.status) return r.status = sourceAnchors.status, r;
+  if (!targetAnchors.status) return r.status = targetAnchors.status, r;
+  std::vector<int> si, ti;
+  if (Status s = matchAnchors(sourceAnchors, targetAnchors, si, ti); !s) return r.status = s, r;
+  if (si.size() < 3) {
+    r.status = Status::error(ErrorCode::TooFewAnchors,
+                             std::to_string(si.size()) +
+                                 " corresponding anchors given; at least 3 are needed (more for a good map)");
+    return r;
+  }
+  std::vector<SnappedAnchor> ss, ts;
+  if (Status s = snapAnchors(source, sourceAnchors, options.snapTolerance, "source", ss); !s) return r.status = s, r;
+  if (Status s = snapAnchors(target, targetAnchors, options.snapTolerance, "target", ts); !s) return r.status = s, r;
+  for (size_t k = 0; k < si.size(); ++k) {
+    r.anchors.names.push_back(sourceAnchors.anchors[si[k]].name);
+    r.anchors.source.push_back(ss[si[k]]);
+    r.anchors.target.push_back(ts[ti[k]]);
+  }
+  return r;
+}
+
+void loadAndValidate(const InputFiles& files, const ValidationOptions& options, LoadedInput& out) {
+  out.report = InputReport{};
+  out.source = IndexedMesh{};
+  out.target = IndexedMesh{};
+  out.sourceLoad = loadMesh(files.sourceMesh, out.sourceMesh);
+  if (!out.sourceLoad.status) return void(out.report.status = out.sourceLoad.status);
+  out.targetLoad = loadMesh(files.targetMesh, out.targetMesh);
+  if (!out.targetLoad.status) return void(out.report.status = out.targetLoad.status);
+  out.source = toIndexed(out.sourceMesh);
+  out.target = toIndexed(out.targetMesh);
+  const AnchorSet sa = readAnchors(files.sourceAnchors);
+  const AnchorSet ta = readAnchors(files.targetAnchors);
+  out.report = validateInput(out.source, out.target, sa, ta, options, out.sourceLoad.hadPolygons,
+                             out.targetLoad.hadPolygons);
+  // Name the files rather than the roles where the message speaks of a mesh.
+  auto rename = [&](MeshReport& m, const std::string& path) {
+    if (!m.status) m.status.message = m.name + " mesh '" + path + "'" + m.status.message.substr(m.name.size() + 5);
+  };
+  rename(out.report.source, files.sourceMesh);
+  rename(out.report.target, files.targetMesh);
+  if (!out.report.source.status) out.report.status = out.report.source.status;
+  else if (!out.report.target.status) out.report.status = out.report.target.status;
+}
+
+}  // namespace cbd

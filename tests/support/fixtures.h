@@ -1,0 +1,49 @@
+#pragma once
+// Procedural meshes for the tests: closed surfaces of genus 0, 1, 2 and the broken inputs the
+// validator must recognise. All are built from formulas, nothing is read from disk.
+
+#include <string>
+
+#include "cbd/mesh.h"
+
+namespace cbd::fixtures {
+
+/// Icosahedron subdivided `levels` times (1-to-4), projected onto the unit sphere.
+IndexedMesh icosphere(int levels);
+
+/// Torus with major radius R, minor radius r, `nu` x `nv` quads split into triangles.
+IndexedMesh torus(double R, double r, int nu, int nv);
+
+/// Closed surface of genus `holes`: the boundary of a plate of voxels (1 x (2*holes+1) cells
+/// in y, 3 in x, one cell thick, each cell `res`^3 sub-voxels) with `holes` square tunnels,
+/// smoothed by `smooth` Laplacian steps. genus == holes.
+IndexedMesh holedPlate(int holes, int res, int smooth = 10);
+
+/// Closed (capped) cylinder of radius r and height h: genus 0.
+IndexedMesh cappedCylinder(double r, double h, int around, int along);
+
+/// Open tube (no caps): has two boundary loops.
+IndexedMesh openCylinder(double r, double h, int around, int along);
+
+/// Open cone: apex plus a fan to a circle, one boundary loop.
+IndexedMesh openCone(int around);
+
+/// Three triangles sharing one edge (a non-manifold edge).
+IndexedMesh nonManifoldFan();
+
+/// Two tetrahedra touching at one vertex: closed, edge-manifold, non-manifold vertex.
+IndexedMesh twoTetrahedraAtVertex();
+
+/// Two disjoint tetrahedra.
+IndexedMesh twoComponents();
+
+/// A regular tetrahedron.
+IndexedMesh tetrahedron(const Vec3& offset = Vec3::Zero(), double scale = 1.0);
+
+/// Write a mesh as OFF (for CLI tests).
+bool writeOff(const std::string& path, const IndexedMesh& mesh);
+
+/// Euler characteristic V - E + F over referenced vertices.
+int eulerCharacteristic(const IndexedMesh& mesh);
+
+}  // namespace cbd::fixtures

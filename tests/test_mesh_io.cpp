@@ -1,0 +1,135 @@
+// Loading PLY/OFF/COFF/OBJ/STL through vcglib and writing PLY with colour and quality.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "cbd/mesh.h"
+#include "support/fixtures.h"
+
+using namespace cbd;
+namespace fx = cbd::fixtures;
+namespace fs = std::filesystem;
+
+namespace {
+struct TempDir {
+  fs::path path;
+  TempDir() {
+    path = fs::temp_directory_path() / ("cbd_test_io_" + std::to_string(::getpid()) + "_" +
+                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::create_directories(path);
+  }
+  ~TempDir() { fs::remove_all(path); }
+  std::string file(const std::string& n) const { return (path / n).string(); }
+};
+void write(const std::string& p, const std::string& text) { std::ofstream(p) << text; }
+}  // namespace
+
+TEST(MeshIO, OffRoundTripThroughPly) {
+  TempDir d;
+  const IndexedMesh sphere = fx::icosphere(2);
+  ASSERT_TRUE(fx::writeOff(d.file("s.off"), sphere));
+  Mesh m;
+  LoadResult r = loadMesh(d.file("s.off"), m);
+  ASSERT_TRUE(r.status.ok()) << r.status.message;
+  EXPECT_FALSE(r.hadPolygons);
+  IndexedMesh back = toIndexed(m);
+  ASSERT_EQ(back.vertexCount(), sphere.vertexCount());
+  ASSERT_EQ(back.faceCount(), sphere.faceCount());
+  EXPECT_EQ(back.faces, sphere.faces);
+  for (int v = 0; v < sphere.vertexCount(); ++v) EXPECT_LT((back.positions[v] - sphere.positions[v]).norm(), 1e-6);
+
+  for (size_t f = 0; f < m.face.size(); ++f) {
+    m.face[f].C() = vcg::Color4b(static_cast<unsigned char>(f % 256), 10, 20, 255);
+    m.face[f].Q() = 0.5 * static_cast<double>(f);
+  }
+  for (size_t v = 0; v < m.vert.size(); ++v) m.vert[v].C() = vcg::Color4b(1, 2, static_cast<unsigned char>(v % 256), 255);
+  SavePlyOptions opt;
+  opt.faceColor = opt.faceQuality = opt.vertexColor = true;
+  ASSERT_TRUE(savePly(d.file("s.ply"), m, opt).ok());
+  EXPECT_FALSE(fs::exists(d.file(".s.ply.tmp")));
+  Mesh m2;
+  r = loadMesh(d.file("s.ply"), m2);
+  ASSERT_TRUE(r.status.ok()) << r.status.message;
+  EXPECT_TRUE(r.hasVertexColor);
+  ASSERT_EQ(m2.FN(), m.FN());
+  for (size_t f = 0; f < m.face.size(); ++f) {
+    EXPECT_EQ(m2.face[f].C(), m.face[f].C());
+    EXPECT_DOUBLE_EQ(m2.face[f].Q(), m.face[f].Q());
+  }
+  EXPECT_EQ(m2.vert[42].C(), m.vert[42].C());
+  // Positions survive a PLY round trip in double precision.
+  EXPECT_EQ(toIndexed(m2).positions[5], toIndexed(m).positions[5]);
+}
+
+TEST(MeshIO, ColouredOff) {
+  TempDir d;
+  write(d.file("c.off"),
+        "COFF\n4 4 0\n1 1 1 255 0 0 255\n1 -1 -1 0 255 0 255\n-1 1 -1 0 0 255 255\n-1 -1 1 9 9 9 255\n"
+        "3 0 1 2\n3 0 3 1\n3 0 2 3\n3 1 3 2\n");
+  Mesh m;
+  const LoadResult r = loadMesh(d.file("c.off"), m);
+  ASSERT_TRUE(r.status.ok()) << r.status.message;
+  EXPECT_TRUE(r.hasVertexColor);
+  EXPECT_EQ(m.VN(), 4);
+  EXPECT_EQ(m.vert[0].C(), vcg::Color4b(255, 0, 0, 255));
+  EXPECT_EQ(m.vert[2].C(), vcg::Color4b(0, 0, 255, 255));
+}
+
+TEST(MeshIO, PolygonsAreReported) {
+  TempDir d;
+  write(d.file("cube.off"),
+        "OFF\n8 6 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n0 0 1\n1 0 1\n1 1 1\n0 1 1\n"
+        "4 0 3 2 1\n4 4 5 6 7\n4 0 1 5 4\n4 1 2 6 5\n4 2 3 7 6\n4 3 0 4 7\n");
+  Mesh m;
+  const LoadResult r = loadMesh(d.file("cube.off"), m);
+  ASSERT_TRUE(r.status.ok()) << r.status.message;
+  EXPECT_TRUE(r.hadPolygons);
+  EXPECT_EQ(m.FN(), 12);
+}
+
+TEST(MeshIO, ObjAndStl) {
+  TempDir d;
+  write(d.file("t.obj"), "v 1 1 1\nv 1 -1 -1\nv -1 1 -1\nv -1 -1 1\nf 1 2 3\nf 1 4 2\nf 1 3 4\nf 2 4 3\n");
+  Mesh m;
+  LoadResult r = loadMesh(d.file("t.obj"), m);
+  ASSERT_TRUE(r.status.ok()) << r.status.message;
+  EXPECT_EQ(m.VN(), 4);
+  EXPECT_EQ(m.FN(), 4);
+  const IndexedMesh tet = fx::tetrahedron();
+  std::string stl = "solid t\n";
+  for (const auto& f : tet.faces) {
+    stl += "facet normal 0 0 0\nouter loop\n";
+    for (int v : f) {
+      const Vec3& p = tet.positions[v];
+      stl += "vertex " + std::to_string(p.x()) + " " + std::to_string(p.y()) + " " + std::to_string(p.z()) + "\n";
+    }
+    stl += "endloop\nendfacet\n";
+  }
+  stl += "endsolid t\n";
+  write(d.file("t.stl"), stl);
+  Mesh s;
+  r = loadMesh(d.file("t.stl"), s);
+  ASSERT_TRUE(r.status.ok()) << r.status.message;
+  EXPECT_EQ(s.FN(), 4);
+  EXPECT_EQ(s.VN(), 4);  // the triangle soup is welded
+}
+
+TEST(MeshIO, Errors) {
+  TempDir d;
+  Mesh m;
+  EXPECT_EQ(loadMesh(d.file("missing.off"), m).status.code, ErrorCode::FileNotFound);
+  write(d.file("x.xyz"), "1 2 3\n");
+  EXPECT_EQ(loadMesh(d.file("x.xyz"), m).status.code, ErrorCode::UnsupportedFormat);
+  write(d.file("empty.off"), "");
+  EXPECT_EQ(loadMesh(d.file("empty.off"), m).status.code, ErrorCode::MalformedMesh);
+  write(d.file("trunc.off"), "OFF\n4 4 0\n1 1 1\n1 -1 -1\n");
+  EXPECT_EQ(loadMesh(d.file("trunc.off"), m).status.code, ErrorCode::MalformedMesh);
+  write(d.file("trunc.ply"), "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\n");
+  EXPECT_EQ(loadMesh(d.file("trunc.ply"), m).status.code, ErrorCode::MalformedMesh);
+  write(d.file("novert.off"), "OFF\n0 0 0\n");
+  const auto code = loadMesh(d.file("novert.off"), m).status.code;
+  EXPECT_TRUE(code == ErrorCode::EmptyMesh || code == ErrorCode::MalformedMesh);
+  SavePlyOptions opt;
+  EXPECT_EQ(savePly(d.file("nodir/x.ply"), m, opt).code, ErrorCode::OutputError);
+}

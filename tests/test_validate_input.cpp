@@ -1,0 +1,179 @@
+// validateMesh / validateInput: one test per mesh error code, genus of every fixture.
+#include <gtest/gtest.h>
+
+#include "cbd/validate_input.h"
+#include "support/fixtures.h"
+
+using namespace cbd;
+namespace fx = cbd::fixtures;
+
+namespace {
+MeshReport check(const IndexedMesh& m) { return validateMesh(m, "test"); }
+}  // namespace
+
+TEST(ValidateMesh, GenusOfClosedFixtures) {
+  struct Case { const char* name; IndexedMesh mesh; int genus; };
+  std::vector<Case> cases = {
+      {"tetrahedron", fx::tetrahedron(), 0},
+      {"icosphere", fx::icosphere(2), 0},
+      {"capped cylinder", fx::cappedCylinder(1, 3, 16, 6), 0},
+      {"torus", fx::torus(2, 0.7, 24, 12), 1},
+      {"double torus", fx::holedPlate(2, 2, 5), 2},
+      {"triple torus", fx::holedPlate(3, 2, 5), 3},
+  };
+  for (const auto& c : cases) {
+    SCOPED_TRACE(c.name);
+    const MeshReport r = check(c.mesh);
+    ASSERT_TRUE(r.status.ok()) << r.status.message;
+    EXPECT_EQ(r.genus, c.genus);
+    EXPECT_EQ(r.eulerCharacteristic, 2 - 2 * c.genus);
+    EXPECT_EQ(r.eulerCharacteristic, fx::eulerCharacteristic(c.mesh));
+    EXPECT_EQ(r.vertices, c.mesh.vertexCount());
+    EXPECT_EQ(r.faces, c.mesh.faceCount());
+    EXPECT_EQ(r.edges * 2, r.faces * 3);  // closed triangle surface
+    EXPECT_EQ(r.components, 1);
+  }
+}
+
+TEST(ValidateMesh, NotTriangles) {
+  const MeshReport r = validateMesh(fx::icosphere(1), "test", /*hadPolygons=*/true);
+  EXPECT_EQ(r.status.code, ErrorCode::NotTriangles);
+}
+
+TEST(ValidateMesh, EmptyMesh) {
+  EXPECT_EQ(check(IndexedMesh{}).status.code, ErrorCode::EmptyMesh);
+}
+
+TEST(ValidateMesh, OpenBoundaryNamesAnEdge) {
+  const MeshReport r = check(fx::openCylinder(1, 2, 12, 4));
+  EXPECT_EQ(r.status.code, ErrorCode::OpenBoundary);
+  EXPECT_NE(r.status.message.find("24 boundary edges"), std::string::npos) << r.status.message;
+  EXPECT_EQ(check(fx::openCone(10)).status.code, ErrorCode::OpenBoundary);
+}
+
+TEST(ValidateMesh, NonManifoldEdge) {
+  const MeshReport r = check(fx::nonManifoldFan());
+  EXPECT_EQ(r.status.code, ErrorCode::NonManifoldEdge);
+  EXPECT_NE(r.status.message.find("edge 0-1"), std::string::npos) << r.status.message;
+}
+
+TEST(ValidateMesh, NonManifoldVertex) {
+  const MeshReport r = check(fx::twoTetrahedraAtVertex());
+  EXPECT_EQ(r.status.code, ErrorCode::NonManifoldVertex) << r.status.message;
+  EXPECT_NE(r.status.message.find("vertex 0"), std::string::npos) << r.status.message;
+}
+
+TEST(ValidateMesh, MultipleComponents) {
+  const MeshReport r = check(fx::twoComponents());
+  EXPECT_EQ(r.status.code, ErrorCode::MultipleComponents);
+  EXPECT_EQ(r.components, 2);
+}
+
+TEST(ValidateMesh, DegenerateFace) {
+  IndexedMesh m = fx::icosphere(1);
+  // Move a vertex onto the midpoint of the opposite edge of one of its faces: zero area.
+  const auto f = m.faces[7];
+  m.positions[f[0]] = 0.5 * (m.positions[f[1]] + m.positions[f[2]]);
+  const MeshReport r = check(m);
+  EXPECT_EQ(r.status.code, ErrorCode::DegenerateFace);
+  EXPECT_NE(r.status.message.find("face 7"), std::string::npos) << r.status.message;
+  IndexedMesh rep = fx::icosphere(1);
+  rep.faces[3][1] = rep.faces[3][0];
+  EXPECT_EQ(check(rep).status.code, ErrorCode::DegenerateFace);
+}
+
+TEST(ValidateMesh, DuplicateFace) {
+  IndexedMesh m = fx::icosphere(1);
+  m.faces.push_back(m.faces[5]);
+  EXPECT_EQ(check(m).status.code, ErrorCode::DuplicateFace);
+}
+
+TEST(ValidateMesh, InconsistentOrientation) {
+  IndexedMesh m = fx::icosphere(1);
+  std::swap(m.faces[4][1], m.faces[4][2]);
+  const MeshReport r = check(m);
+  EXPECT_EQ(r.status.code, ErrorCode::InconsistentOrientation);
+  EXPECT_NE(r.status.message.find("3 edges"), std::string::npos) << r.status.message;
+}
+
+TEST(ValidateMesh, InvalidCoordinates) {
+  IndexedMesh m = fx::icosphere(1);
+  m.positions[9].x() = std::numeric_limits<double>::quiet_NaN();
+  MeshReport r = check(m);
+  EXPECT_EQ(r.status.code, ErrorCode::InvalidCoordinates);
+  EXPECT_NE(r.status.message.find("vertex 9"), std::string::npos);
+  m.positions[9].x() = std::numeric_limits<double>::infinity();
+  EXPECT_EQ(check(m).status.code, ErrorCode::InvalidCoordinates);
+}
+
+TEST(ValidateMesh, FaceIndexOutOfRange) {
+  IndexedMesh m = fx::tetrahedron();
+  m.faces[0][2] = 17;
+  EXPECT_EQ(check(m).status.code, ErrorCode::MalformedMesh);
+}
+
+TEST(ValidateMesh, UnreferencedVerticesOnlyWarn) {
+  IndexedMesh m = fx::icosphere(1);
+  m.positions.push_back(Vec3(5, 5, 5));
+  m.positions.push_back(Vec3(std::nan(""), 0, 0));  // unreferenced: ignored even if not finite
+  const MeshReport r = check(m);
+  ASSERT_TRUE(r.status.ok()) << r.status.message;
+  EXPECT_EQ(r.unreferencedVertices, 2);
+  EXPECT_EQ(r.genus, 0);
+  ASSERT_EQ(r.warnings.size(), 1u);
+  EXPECT_NE(r.warnings[0].find("2 unreferenced"), std::string::npos);
+}
+
+// --- validateInput: the pair and its anchors -------------------------------------------
+
+namespace {
+AnchorSet namedAt(const IndexedMesh& m, const std::vector<int>& verts, const std::string& label) {
+  AnchorSet s;
+  s.source = label;
+  for (size_t k = 0; k < verts.size(); ++k) {
+    Anchor a;
+    a.name = "a" + std::to_string(k);
+    a.position = m.positions[verts[k]];
+    a.hasPosition = true;
+    a.line = static_cast<int>(k) + 1;
+    s.anchors.push_back(a);
+  }
+  return s;
+}
+}  // namespace
+
+TEST(ValidateInput, AcceptsAMatchingPair) {
+  const IndexedMesh s = fx::icosphere(2), t = fx::icosphere(3);
+  AnchorSet sa = namedAt(s, {0, 1, 2, 3, 4, 5}, "src"), ta = namedAt(t, {0, 1, 2, 3, 4, 5}, "tgt");
+  std::reverse(ta.anchors.begin(), ta.anchors.end());  // order does not matter, names do
+  const InputReport r = validateInput(s, t, sa, ta);
+  ASSERT_TRUE(r.status.ok()) << r.status.message;
+  ASSERT_EQ(r.anchors.size(), 6);
+  for (int k = 0; k < 6; ++k) {
+    EXPECT_EQ(r.anchors.names[k], "a" + std::to_string(k));
+    EXPECT_EQ(r.anchors.source[k].vertex, k);
+    EXPECT_EQ(r.anchors.target[k].vertex, k);  // icosphere levels share the first vertices
+    EXPECT_LT(r.anchors.source[k].snapDistance, 1e-12);
+  }
+}
+
+TEST(ValidateInput, GenusMismatch) {
+  const IndexedMesh s = fx::icosphere(2), t = fx::torus(2, 0.5, 20, 10);
+  const InputReport r = validateInput(s, t, namedAt(s, {0, 1, 2}, "s"), namedAt(t, {0, 5, 9}, "t"));
+  EXPECT_EQ(r.status.code, ErrorCode::GenusMismatch);
+  EXPECT_NE(r.status.message.find("genus 0"), std::string::npos);
+  EXPECT_NE(r.status.message.find("genus 1"), std::string::npos);
+}
+
+TEST(ValidateInput, TooFewAnchors) {
+  const IndexedMesh s = fx::icosphere(2);
+  const InputReport r = validateInput(s, s, namedAt(s, {0, 1}, "s"), namedAt(s, {0, 1}, "t"));
+  EXPECT_EQ(r.status.code, ErrorCode::TooFewAnchors);
+}
+
+TEST(ValidateInput, BadSourceMeshIsReportedFirst) {
+  const IndexedMesh s = fx::openCone(8), t = fx::icosphere(1);
+  const InputReport r = validateInput(s, t, namedAt(s, {0, 1, 2}, "s"), namedAt(t, {0, 1, 2}, "t"));
+  EXPECT_EQ(r.status.code, ErrorCode::OpenBoundary);
+  EXPECT_EQ(r.status.message.rfind("source mesh", 0), 0u) << r.status.message;
+}
