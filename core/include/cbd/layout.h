@@ -1,0 +1,114 @@
+#pragma once
+/// @file layout.h
+/// A patch layout (base domain) on a surface: anchors linked by non-crossing paths that cut the
+/// surface into triangular patches (Kwok et al. 2012, Sec. 3), and `validateLayout`, which checks
+/// every invariant the later stages rely on.
+
+#include <array>
+#include <string>
+#include <vector>
+
+#include "cbd/refined_mesh.h"
+#include "cbd/status.h"
+
+namespace cbd {
+
+/// How a layout edge came to be.
+enum class EdgeKind {
+  VoronoiCut,     ///< traced across a cut of the anchors' Voronoi diagram (Sec. 5.1)
+  Triangulation,  ///< added to triangulate a region that was not a triangle (Sec. 5.1)
+  Greedy          ///< accepted by the greedy shortest-path baseline (Kraevoy & Sheffer 2004)
+};
+
+/// One edge of the layout: a path between two anchors along edges of the refined mesh.
+struct LayoutEdge {
+  int a = -1, b = -1;          ///< anchor indices (a != b)
+  EdgeKind kind = EdgeKind::VoronoiCut;
+  int cut = -1;                ///< index of the Voronoi cut it crosses (VoronoiCut only)
+  int eta = 0;                 ///< which of the cuts shared by the anchors' clusters (0-based)
+  std::vector<int> vertices;   ///< refined-mesh vertex chain, from anchor a to anchor b
+  double length = 0.0;
+};
+
+/// One triangular patch: corners and sides in counter-clockwise order (seen from outside).
+struct Patch {
+  std::array<int, 3> corners{};   ///< anchor indices
+  std::array<int, 3> edges{};     ///< edges[k] joins corners[k] -> corners[(k+1)%3]
+  std::array<bool, 3> forward{};  ///< edges[k] runs from its a to its b in this direction
+  int faces = 0;                  ///< refined-mesh faces inside the patch
+};
+
+/// A complete layout on one surface.
+struct Layout {
+  std::vector<int> anchorVertices;      ///< refined-mesh vertex of each anchor
+  std::vector<LayoutEdge> edges;
+  std::vector<Patch> patches;
+  /// Per anchor, its layout edges in counter-clockwise order around it (seen from outside).
+  std::vector<std::vector<int>> rotation;
+  RefinedMesh mesh;                     ///< the input surface with every path as an edge chain
+  std::vector<int> facePatch;           ///< patch of every refined-mesh face
+  std::vector<int> edgePath;            ///< layout edge of every refined-mesh edge, or -1
+
+  int anchorCount() const { return static_cast<int>(anchorVertices.size()); }
+  /// Number of anchor pairs linked by more than one edge (multiple linkages, Fig. 3).
+  int multipleLinkages() const;
+};
+
+/// What `validateLayout` measured.
+struct LayoutCheck {
+  Status status;                 ///< InternalError naming the first broken invariant
+  int eulerCharacteristic = 0;   ///< V - E + F of the layout
+};
+
+/// Check a layout: V - E + F equals the surface's Euler characteristic (`expectedEuler`);
+/// every patch is a disk bounded by three paths with three distinct anchor corners; every
+/// layout edge is a side of exactly two patch sides (once in each direction); paths are simple
+/// chains of refined-mesh edges that share no vertex except their end anchors and pass through
+/// no other anchor; the rotation system agrees with the patches (consecutive sides at a corner
+/// are consecutive in the rotation).
+LayoutCheck validateLayout(const Layout& layout, int expectedEuler);
+
+}  // namespace cbd
+
+namespace cbd {
+
+/// One boundary loop of a region of the surface cut along the paths.
+struct RegionLoop {
+  std::vector<int> halfedges;   ///< path halfedges with the region on their left, in order
+  std::vector<int> corners;     ///< anchor indices met along the loop, in order
+  std::vector<int> cornerHalfedge;  ///< outgoing loop halfedge at each corner
+  std::vector<int> sides;       ///< layout edge from corners[k] to corners[k+1]
+};
+
+/// A connected region of faces between paths.
+struct Region {
+  int faces = 0;
+  int eulerCharacteristic = 0;   ///< of the region cut open along its paths
+  std::vector<RegionLoop> loops;
+  std::vector<int> interiorAnchors;  ///< anchors inside the region, on no path
+
+  /// A disk bounded by three paths with three distinct anchor corners and nothing inside.
+  bool isTriangle() const;
+};
+
+/// Regions of a surface cut along path edges (edgePath[e] >= 0).
+struct RegionMap {
+  std::vector<int> faceRegion;
+  std::vector<Region> regions;
+};
+
+/// Cut the surface along the path edges and describe every region (boundary loops, corners,
+/// sides, interior anchors, Euler characteristic). `anchorOfVertex[v]` is the anchor index of a
+/// vertex or -1.
+RegionMap analyzeRegions(const RefinedMesh& mesh, const std::vector<int>& edgePath,
+                         const std::vector<int>& anchorOfVertex);
+
+/// The faces of the wedge at a loop corner: the region's faces around the corner vertex
+/// between the incoming and the outgoing loop halfedge.
+std::vector<int> cornerWedge(const RefinedMesh& mesh, const std::vector<int>& edgePath, int outgoingHalfedge);
+
+/// Assemble `layout.patches`, `layout.rotation` and `layout.facePatch` from the paths cut into
+/// `layout.mesh` (`layout.edgePath` set). InternalError if a region is not a triangle.
+Status assemblePatches(Layout& layout);
+
+}  // namespace cbd

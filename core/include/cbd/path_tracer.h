@@ -1,0 +1,127 @@
+#pragma once
+/// @file path_tracer.h
+/// The path tracing operator of Sec. 4 (Kwok et al. 2012): shortest paths between anchors over
+/// mesh vertices plus adaptive edge nodes, `e = max(b, round(b * l / lbar))` per edge, where `l`
+/// is the edge length and `lbar` the mean length of the edges incident to its two end vertices
+/// (itself included); every pair of nodes on the boundary of a face is joined by an arc across
+/// the face (nodes on one edge only to their neighbours along it), weighted by length.
+///
+/// Committed paths are cut into the `RefinedMesh`: their edge nodes become vertices, so each
+/// face a path crossed becomes regions bounded by path edges. Later paths may cross a region
+/// between two of its nodes only, never a path edge, never a path vertex: this is the paper's
+/// face-region intersection test (Fig. 7), topological and free of numeric predicates. The
+/// sub-edges created by a split get their edge nodes recomputed by the same formula.
+
+#include <cstdint>
+#include <vector>
+
+#include "cbd/refined_mesh.h"
+#include "cbd/status.h"
+
+namespace cbd {
+
+/// Options of the edge-node graph.
+struct EdgeNodeOptions {
+  int minEdgeNodes = 3;     ///< b: edge nodes on every edge (1 with adaptive = false is the paper's E1)
+  bool adaptive = true;     ///< add nodes on edges longer than their neighbours (b * l / lbar)
+  int maxEdgeNodes = 48;    ///< cap per edge, against pathological slivers
+};
+
+/// Which faces a search may cross: all (label == nullptr) or those whose label is one of up to
+/// two values.
+struct FaceFilter {
+  const std::vector<int>* label = nullptr;
+  int a = -1, b = -1;
+  bool allows(int f) const { return !label || (*label)[f] == a || (*label)[f] == b; }
+};
+
+/// A goal of a search: an anchor vertex, optionally reachable only through some of its faces
+/// (a sector between two paths already leaving it).
+struct PathGoal {
+  int vertex = -1;
+  std::vector<int> faces;  ///< empty: any allowed face around the vertex
+  int tag = 0;             ///< returned with the path, to tell goals at the same vertex apart
+};
+
+/// One shortest-path query.
+struct PathQuery {
+  int source = -1;                 ///< anchor vertex the path leaves
+  std::vector<int> sourceFaces;    ///< empty: any allowed face around the source
+  std::vector<PathGoal> goals;     ///< the nearest reachable goal ends the search
+  FaceFilter filter;
+  std::vector<int> blockedEdgeLabels;  ///< edges with these labels (and their vertices) are walls
+};
+
+/// A traced path, before it is committed.
+struct TracedPath {
+  bool found = false;
+  int goal = -1;          ///< index into PathQuery::goals
+  double length = 0.0;
+  /// Nodes from source to goal: a vertex (>= 0) or an edge node, encoded as
+  /// -(1 + slot) where slot indexes the edge-node table at the time of the search.
+  std::vector<int64_t> nodes;
+};
+
+/// Stateful path tracer over a refined mesh: the edge-node graph is kept up to date as paths are
+/// committed, together with per-face and per-edge labels that splits inherit.
+class PathTracer {
+ public:
+  PathTracer(RefinedMesh& mesh, const EdgeNodeOptions& options);
+
+  RefinedMesh& mesh() { return mesh_; }
+  const RefinedMesh& mesh() const { return mesh_; }
+
+  /// Vertices that paths may not pass through (anchors), except as source or goal.
+  void setAnchor(int v, bool isAnchor);
+  bool isAnchor(int v) const { return anchor_[v] != 0; }
+
+  /// Per-face labels (e.g. Voronoi cluster) inherited by the faces a split creates.
+  std::vector<int>& faceLabel() { return faceLabel_; }
+  /// Per-edge labels (e.g. cut index) inherited by the continuation of a split edge; the
+  /// diagonals a split creates get -1.
+  std::vector<int>& edgeLabel() { return edgeLabel_; }
+
+  /// Layout edge owning a mesh edge, or -1 for a free edge.
+  int pathOfEdge(int e) const { return edgePath_[e]; }
+  const std::vector<int>& edgePath() const { return edgePath_; }
+  /// Number of paths through a vertex (anchors count every path ending there).
+  int pathCount(int v) const { return vertexPaths_[v]; }
+
+  /// Shortest path for a query (Dijkstra over the edge-node graph).
+  TracedPath trace(const PathQuery& query);
+
+  /// Cut a traced path into the mesh as layout edge `pathId`. Returns the vertex chain.
+  /// InternalError if the mesh does not contain the expected edges afterwards (a bug).
+  Status commit(const TracedPath& path, int pathId, std::vector<int>& vertices);
+
+  /// Undo a committed path (its vertices stay in the mesh; its edges become free again).
+  void release(const std::vector<int>& vertices, int pathId);
+
+  /// Edge nodes currently on edge e (0 on path edges).
+  int edgeNodeCount(int e) const { return edgeNodes_[e]; }
+  /// Total nodes (vertices + edge nodes) of the current graph.
+  int64_t nodeCount() const;
+  /// Position of a node as encoded in TracedPath::nodes.
+  Vec3 nodePosition(int64_t node) const;
+
+ private:
+  void growEdges();
+  void computeEdgeNodes(int e);
+  void onSplit();
+  template <class F> void forEachNodeOfFace(int f, int64_t except, F&& fn) const;
+
+  RefinedMesh& mesh_;
+  EdgeNodeOptions options_;
+  std::vector<char> anchor_;
+  std::vector<int> vertexPaths_;
+  std::vector<int> faceLabel_, edgeLabel_, edgePath_;
+  std::vector<int> edgeNodes_, slotBase_;
+  std::vector<int> slotEdge_;
+  // Dijkstra scratch (stamped so nothing is cleared between searches).
+  std::vector<double> distV_, distS_;
+  std::vector<int64_t> parentV_, parentS_;
+  std::vector<uint32_t> stampV_, stampS_, doneV_, doneS_, blockV_, blockE_;
+  uint32_t stamp_ = 0;
+};
+
+}  // namespace cbd

@@ -1,0 +1,42 @@
+#pragma once
+/// @file source_layout.h
+/// Sec. 5.1 of Kwok et al. 2012: the base domain on the source model. Voronoi clusters of the
+/// anchors, one path across every cut (restricted to the two clusters, through that cut only,
+/// so anchor pairs whose clusters share several cuts get multiple linkages), then the regions
+/// that are not triangles are triangulated by paths searched inside them.
+
+#include <string>
+#include <vector>
+
+#include "cbd/layout.h"
+#include "cbd/path_tracer.h"
+#include "cbd/voronoi.h"
+
+namespace cbd {
+
+/// Options of `buildSourceLayout`.
+struct SourceLayoutOptions {
+  EdgeNodeOptions edgeNodes;        ///< b = 3 adaptive (the paper's C); b = 1 fixed is E1
+  int maxTriangulationPaths = -1;   ///< cap on extra paths; -1: 4 * anchors + 64
+};
+
+/// Result of `buildSourceLayout`: the layout and every intermediate stage.
+struct SourceLayoutResult {
+  Status status;                 ///< LayoutFailed names the region and the reason
+  Layout layout;
+  std::vector<int> faceCluster;  ///< Voronoi cluster of every face of layout.mesh
+  CutsResult cuts;               ///< on the mesh before the paths were cut in
+  int cutPaths = 0;              ///< paths traced across cuts
+  int cutPathsFailed = 0;        ///< cuts no path could cross (left to the triangulation)
+  int triangulationPaths = 0;    ///< paths added to triangulate regions
+  int removedPaths = 0;          ///< paths removed because they bounded an empty 2-gon
+  double voronoiSeconds = 0.0;
+  double layoutSeconds = 0.0;    ///< cuts, paths and triangulation
+};
+
+/// Build the base domain on a validated closed surface with anchors at the given vertices
+/// (distinct, at least 3). Errors: InvalidArgument (bad anchor indices), LayoutFailed.
+SourceLayoutResult buildSourceLayout(const IndexedMesh& mesh, const std::vector<int>& anchorVertices,
+                                     const SourceLayoutOptions& options = {});
+
+}  // namespace cbd

@@ -1,0 +1,227 @@
+#include "cbd/layout.h"
+
+#include <algorithm>
+#include <map>
+#include <set>
+
+namespace cbd {
+
+int Layout::multipleLinkages() const {
+  std::map<std::pair<int, int>, int> count;
+  for (const LayoutEdge& e : edges) ++count[std::minmax(e.a, e.b)];
+  int n = 0;
+  for (const auto& [k, c] : count) n += (c > 1);
+  return n;
+}
+
+bool Region::isTriangle() const {
+  if (loops.size() != 1 || eulerCharacteristic != 1 || !interiorAnchors.empty()) return false;
+  const auto& c = loops[0].corners;
+  return c.size() == 3 && c[0] != c[1] && c[1] != c[2] && c[0] != c[2];
+}
+
+namespace {
+int nextBoundary(const RefinedMesh& m, const std::vector<int>& edgePath, int h) {
+  int g = m.next(h);
+  while (edgePath[RefinedMesh::edgeOf(g)] < 0) g = m.next(RefinedMesh::twin(g));
+  return g;
+}
+}  // namespace
+
+std::vector<int> cornerWedge(const RefinedMesh& m, const std::vector<int>& edgePath, int out) {
+  // Rotate clockwise from the outgoing loop halfedge until the previous path halfedge.
+  std::vector<int> faces;
+  int g = out;
+  for (;;) {
+    faces.push_back(m.face(g));
+    const int in = m.prev(g);  // ends at the corner, in the same face
+    if (edgePath[RefinedMesh::edgeOf(in)] >= 0) break;
+    g = RefinedMesh::twin(in);
+    if (g == out) break;  // no path on this side (interior vertex)
+  }
+  return faces;
+}
+
+RegionMap analyzeRegions(const RefinedMesh& m, const std::vector<int>& edgePath,
+                         const std::vector<int>& anchorOfVertex) {
+  RegionMap r;
+  const int nf = m.faceCount();
+  r.faceRegion.assign(nf, -1);
+  std::vector<int> stack;
+  for (int f0 = 0; f0 < nf; ++f0) {
+    if (r.faceRegion[f0] >= 0) continue;
+    const int id = static_cast<int>(r.regions.size());
+    r.regions.emplace_back();
+    r.faceRegion[f0] = id;
+    stack.assign(1, f0);
+    while (!stack.empty()) {
+      const int f = stack.back();
+      stack.pop_back();
+      ++r.regions[id].faces;
+      for (int k = 0, h = m.faceHalfedge(f); k < 3; ++k, h = m.next(h)) {
+        if (edgePath[RefinedMesh::edgeOf(h)] >= 0) continue;
+        const int g = m.face(RefinedMesh::twin(h));
+        if (r.faceRegion[g] < 0) r.faceRegion[g] = id, stack.push_back(g);
+      }
+    }
+  }
+  // Euler characteristic of each region cut open: V - E + F.
+  std::vector<long long> V(r.regions.size(), 0), E(r.regions.size(), 0);
+  for (int e = 0; e < m.edgeCount(); ++e) {
+    if (edgePath[e] < 0) {
+      ++E[r.faceRegion[m.face(2 * e)]];
+    } else {
+      for (int s = 0; s < 2; ++s) {
+        const int reg = r.faceRegion[m.face(2 * e + s)];
+        ++E[reg];
+        ++V[reg];  // one wedge corner per boundary halfedge
+      }
+    }
+  }
+  std::vector<int> pathsAt(m.vertexCount(), 0);
+  for (int e = 0; e < m.edgeCount(); ++e)
+    if (edgePath[e] >= 0) ++pathsAt[m.to(2 * e)], ++pathsAt[m.to(2 * e + 1)];
+  for (int v = 0; v < m.vertexCount(); ++v) {
+    const int h = m.outgoing(v);
+    if (h < 0 || pathsAt[v] > 0) continue;
+    const int reg = r.faceRegion[m.face(h)];
+    ++V[reg];
+    if (v < static_cast<int>(anchorOfVertex.size()) && anchorOfVertex[v] >= 0)
+      r.regions[reg].interiorAnchors.push_back(anchorOfVertex[v]);
+  }
+  for (size_t i = 0; i < r.regions.size(); ++i)
+    r.regions[i].eulerCharacteristic = static_cast<int>(V[i] - E[i] + r.regions[i].faces);
+  // Boundary loops.
+  std::vector<char> seen(m.halfedgeCount(), 0);
+  for (int h0 = 0; h0 < m.halfedgeCount(); ++h0) {
+    if (seen[h0] || edgePath[RefinedMesh::edgeOf(h0)] < 0) continue;
+    RegionLoop loop;
+    int h = h0;
+    do {
+      seen[h] = 1;
+      loop.halfedges.push_back(h);
+      h = nextBoundary(m, edgePath, h);
+    } while (h != h0 && !seen[h]);
+    for (int x : loop.halfedges) {
+      const int v = m.from(x);
+      if (v < static_cast<int>(anchorOfVertex.size()) && anchorOfVertex[v] >= 0) {
+        loop.corners.push_back(anchorOfVertex[v]);
+        loop.cornerHalfedge.push_back(x);
+        loop.sides.push_back(edgePath[RefinedMesh::edgeOf(x)]);
+      }
+    }
+    r.regions[r.faceRegion[m.face(h0)]].loops.push_back(std::move(loop));
+  }
+  return r;
+}
+
+Status assemblePatches(Layout& layout) {
+  const RefinedMesh& m = layout.mesh;
+  std::vector<int> anchorOf(m.vertexCount(), -1);
+  for (int i = 0; i < layout.anchorCount(); ++i) anchorOf[layout.anchorVertices[i]] = i;
+  RegionMap rm = analyzeRegions(m, layout.edgePath, anchorOf);
+  layout.patches.clear();
+  for (size_t i = 0; i < rm.regions.size(); ++i) {
+    const Region& reg = rm.regions[i];
+    if (!reg.isTriangle()) {
+      return Status::error(ErrorCode::InternalError, "region " + std::to_string(i) + " is not a triangular patch");
+    }
+    Patch p;
+    const RegionLoop& loop = reg.loops[0];
+    for (int k = 0; k < 3; ++k) {
+      p.corners[k] = loop.corners[k];
+      p.edges[k] = loop.sides[k];
+      const LayoutEdge& e = layout.edges[p.edges[k]];
+      p.forward[k] = (e.a == loop.corners[k]);
+    }
+    p.faces = reg.faces;
+    layout.patches.push_back(p);
+  }
+  layout.facePatch = rm.faceRegion;
+  layout.rotation.assign(layout.anchorCount(), {});
+  for (int i = 0; i < layout.anchorCount(); ++i) {
+    const int v = layout.anchorVertices[i];
+    const int start = m.outgoing(v);
+    int h = start;
+    do {
+      const int p = layout.edgePath[RefinedMesh::edgeOf(h)];
+      if (p >= 0) layout.rotation[i].push_back(p);
+      h = m.rotateCCW(h);
+    } while (h != start);
+  }
+  return Status::success();
+}
+
+LayoutCheck validateLayout(const Layout& layout, int expectedEuler) {
+  LayoutCheck c;
+  auto fail = [&](const std::string& what) {
+    c.status = Status::error(ErrorCode::InternalError, "invalid layout: " + what);
+    return c;
+  };
+  const RefinedMesh& m = layout.mesh;
+  const int V = layout.anchorCount(), E = static_cast<int>(layout.edges.size()),
+            F = static_cast<int>(layout.patches.size());
+  c.eulerCharacteristic = V - E + F;
+  if (c.eulerCharacteristic != expectedEuler)
+    return fail("V - E + F = " + std::to_string(V) + " - " + std::to_string(E) + " + " + std::to_string(F) +
+                " = " + std::to_string(c.eulerCharacteristic) + ", the surface has " + std::to_string(expectedEuler));
+  if (static_cast<int>(layout.edgePath.size()) != m.edgeCount()) return fail("edgePath size");
+  std::vector<int> anchorOf(m.vertexCount(), -1);
+  for (int i = 0; i < V; ++i) anchorOf[layout.anchorVertices[i]] = i;
+  // Paths: simple edge chains between their anchors, sharing no vertex but end anchors.
+  std::vector<int> owner(m.vertexCount(), -1);
+  std::vector<int> edgeCount(E, 0);
+  for (int e = 0; e < m.edgeCount(); ++e)
+    if (layout.edgePath[e] >= 0) ++edgeCount[layout.edgePath[e]];
+  for (int p = 0; p < E; ++p) {
+    const LayoutEdge& le = layout.edges[p];
+    const std::string name = "edge " + std::to_string(p) + " (" + std::to_string(le.a) + "-" + std::to_string(le.b) + ")";
+    if (le.a == le.b) return fail(name + " is a loop");
+    if (le.vertices.size() < 2 || le.vertices.front() != layout.anchorVertices[le.a] ||
+        le.vertices.back() != layout.anchorVertices[le.b])
+      return fail(name + " does not run between its anchors");
+    if (static_cast<int>(le.vertices.size()) - 1 != edgeCount[p]) return fail(name + " owns other mesh edges");
+    for (size_t k = 0; k < le.vertices.size(); ++k) {
+      const int v = le.vertices[k];
+      if (k + 1 < le.vertices.size()) {
+        const int h = m.findHalfedge(v, le.vertices[k + 1]);
+        if (h < 0 || layout.edgePath[RefinedMesh::edgeOf(h)] != p) return fail(name + " is not a chain of its mesh edges");
+      }
+      if (k == 0 || k + 1 == le.vertices.size()) continue;
+      if (anchorOf[v] >= 0) return fail(name + " passes through anchor " + std::to_string(anchorOf[v]));
+      if (owner[v] >= 0) return fail(name + " meets edge " + std::to_string(owner[v]) + " at vertex " + std::to_string(v));
+      owner[v] = p;
+    }
+  }
+  // Patches: triangles; each layout edge on two patch sides, once in each direction.
+  RegionMap rm = analyzeRegions(m, layout.edgePath, anchorOf);
+  if (static_cast<int>(rm.regions.size()) != F) return fail("the paths cut the surface into " +
+                                                            std::to_string(rm.regions.size()) + " regions, not " + std::to_string(F));
+  std::vector<int> fwd(E, 0), bwd(E, 0);
+  for (size_t i = 0; i < rm.regions.size(); ++i) {
+    if (!rm.regions[i].isTriangle()) return fail("region " + std::to_string(i) + " is not a disk with three anchor corners");
+    for (int k = 0; k < 3; ++k) {
+      const int p = rm.regions[i].loops[0].sides[k];
+      (layout.edges[p].a == rm.regions[i].loops[0].corners[k] ? fwd : bwd)[p]++;
+    }
+  }
+  for (int p = 0; p < E; ++p)
+    if (fwd[p] != 1 || bwd[p] != 1) return fail("edge " + std::to_string(p) + " is not on exactly two patch sides");
+  // Rotation system: at each patch corner, the incoming and outgoing sides are consecutive
+  // (outgoing, then incoming, counter-clockwise) in the anchor's rotation.
+  if (static_cast<int>(layout.rotation.size()) != V) return fail("rotation system size");
+  for (const Patch& p : layout.patches) {
+    for (int k = 0; k < 3; ++k) {
+      const int a = p.corners[k];
+      const int out = p.edges[k], in = p.edges[(k + 2) % 3];
+      const auto& rot = layout.rotation[a];
+      bool found = false;
+      for (size_t s = 0; s < rot.size() && !found; ++s)
+        found = rot[s] == out && rot[(s + 1) % rot.size()] == in;
+      if (!found) return fail("rotation at anchor " + std::to_string(a) + " disagrees with a patch");
+    }
+  }
+  return c;
+}
+
+}  // namespace cbd

@@ -1,0 +1,391 @@
+#include "cbd/path_tracer.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <queue>
+#include <unordered_map>
+
+namespace cbd {
+namespace {
+
+constexpr int64_t kGoalBase = int64_t(1) << 40;
+constexpr int64_t kNone = std::numeric_limits<int64_t>::min();  // no parent
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+bool contains(const std::vector<int>& v, int x) { return std::find(v.begin(), v.end(), x) != v.end(); }
+
+}  // namespace
+
+PathTracer::PathTracer(RefinedMesh& mesh, const EdgeNodeOptions& options) : mesh_(mesh), options_(options) {
+  options_.minEdgeNodes = std::max(1, options_.minEdgeNodes);
+  options_.maxEdgeNodes = std::max(options_.minEdgeNodes, options_.maxEdgeNodes);
+  const int nv = mesh_.vertexCount(), nf = mesh_.faceCount(), ne = mesh_.edgeCount();
+  anchor_.assign(nv, 0);
+  vertexPaths_.assign(nv, 0);
+  faceLabel_.assign(nf, -1);
+  edgeLabel_.assign(ne, -1);
+  edgePath_.assign(ne, -1);
+  edgeNodes_.assign(ne, 0);
+  slotBase_.assign(ne, 0);
+  for (int e = 0; e < ne; ++e) computeEdgeNodes(e);
+}
+
+void PathTracer::setAnchor(int v, bool isAnchor) { anchor_[v] = isAnchor ? 1 : 0; }
+
+int64_t PathTracer::nodeCount() const {
+  int64_t n = mesh_.vertexCount();
+  for (int c : edgeNodes_) n += c;
+  return n;
+}
+
+void PathTracer::growEdges() {
+  const size_t ne = mesh_.edgeCount(), nf = mesh_.faceCount(), nv = mesh_.vertexCount();
+  edgeLabel_.resize(ne, -1);
+  edgePath_.resize(ne, -1);
+  edgeNodes_.resize(ne, 0);
+  slotBase_.resize(ne, 0);
+  faceLabel_.resize(nf, -1);
+  anchor_.resize(nv, 0);
+  vertexPaths_.resize(nv, 0);
+}
+
+void PathTracer::computeEdgeNodes(int e) {
+  if (edgePath_[e] >= 0) {
+    edgeNodes_[e] = 0;
+    return;
+  }
+  int n = options_.minEdgeNodes;
+  if (options_.adaptive) {
+    const double l = mesh_.edgeLength(e);
+    double sum = 0.0;
+    int count = 0;
+    for (int end = 0; end < 2; ++end) {
+      const int v = mesh_.to(2 * e + end);
+      const int start = mesh_.outgoing(v);
+      int h = start;
+      do {
+        sum += mesh_.edgeLength(RefinedMesh::edgeOf(h));
+        ++count;
+        h = mesh_.rotateCCW(h);
+      } while (h != start);
+    }
+    sum -= l;  // the edge itself was counted from both ends
+    --count;
+    const double lbar = sum / count;
+    if (lbar > 0) n = std::max(n, static_cast<int>(std::lround(options_.minEdgeNodes * l / lbar)));
+  }
+  n = std::min(n, options_.maxEdgeNodes);
+  edgeNodes_[e] = n;
+  slotBase_[e] = static_cast<int>(slotEdge_.size());
+  slotEdge_.insert(slotEdge_.end(), n, e);
+}
+
+void PathTracer::onSplit() {
+  growEdges();
+  const RefinedMesh::SplitRecord& r = mesh_.lastSplit();
+  const int e = RefinedMesh::edgeOf(r.halfedge);
+  edgeLabel_[r.edgeContinued] = edgeLabel_[e];
+  edgeLabel_[r.edgeDiagonalA] = edgeLabel_[r.edgeDiagonalB] = -1;
+  edgePath_[r.edgeContinued] = edgePath_[r.edgeDiagonalA] = edgePath_[r.edgeDiagonalB] = -1;
+  faceLabel_[r.faceNewA] = faceLabel_[mesh_.face(r.halfedge)];
+  faceLabel_[r.faceNewB] = faceLabel_[mesh_.face(RefinedMesh::twin(r.halfedge))];
+  for (int x : {e, r.edgeContinued, r.edgeDiagonalA, r.edgeDiagonalB}) computeEdgeNodes(x);
+}
+
+Vec3 PathTracer::nodePosition(int64_t node) const {
+  if (node >= 0) return mesh_.position(static_cast<int>(node));
+  const int s = static_cast<int>(-node - 1);
+  const int e = slotEdge_[s];
+  const int j = s - slotBase_[e];
+  const double t = (j + 1.0) / (edgeNodes_[e] + 1.0);
+  return (1.0 - t) * mesh_.position(mesh_.from(2 * e)) + t * mesh_.position(mesh_.to(2 * e));
+}
+
+TracedPath PathTracer::trace(const PathQuery& q) {
+  TracedPath result;
+  const int nv = mesh_.vertexCount();
+  const size_t ns = slotEdge_.size();
+  if (distV_.size() < static_cast<size_t>(nv)) {
+    distV_.resize(nv), parentV_.resize(nv), stampV_.resize(nv, 0), doneV_.resize(nv, 0), blockV_.resize(nv, 0);
+  }
+  if (distS_.size() < ns) distS_.resize(ns), parentS_.resize(ns), stampS_.resize(ns, 0), doneS_.resize(ns, 0);
+  if (blockE_.size() < static_cast<size_t>(mesh_.edgeCount())) blockE_.resize(mesh_.edgeCount(), 0);
+  ++stamp_;
+  const uint32_t st = stamp_;
+
+  // Walls: edges labelled as blocked and their end vertices.
+  if (!q.blockedEdgeLabels.empty()) {
+    for (int e = 0; e < mesh_.edgeCount(); ++e) {
+      if (edgeLabel_[e] < 0 || !contains(q.blockedEdgeLabels, edgeLabel_[e])) continue;
+      blockE_[e] = st;
+      blockV_[mesh_.to(2 * e)] = st;
+      blockV_[mesh_.to(2 * e + 1)] = st;
+    }
+  }
+
+  std::vector<double> goalDist(q.goals.size(), kInf);
+  std::vector<int64_t> goalParent(q.goals.size(), kNone);
+  auto isGoalVertex = [&](int v) {
+    for (const auto& g : q.goals)
+      if (g.vertex == v) return true;
+    return false;
+  };
+
+  auto dist = [&](int64_t n) -> double {
+    if (n >= 0) return stampV_[n] == st ? distV_[n] : kInf;
+    const size_t s = static_cast<size_t>(-n - 1);
+    return stampS_[s] == st ? distS_[s] : kInf;
+  };
+  using Item = std::pair<double, int64_t>;
+  std::priority_queue<Item, std::vector<Item>, std::greater<Item>> pq;
+  auto relax = [&](int64_t from, int64_t to, double d) {
+    if (to >= 0) {
+      if (stampV_[to] != st || d < distV_[to]) {
+        stampV_[to] = st, distV_[to] = d, parentV_[to] = from;
+        pq.push({d, to});
+      }
+    } else {
+      const size_t s = static_cast<size_t>(-to - 1);
+      if (stampS_[s] != st || d < distS_[s]) {
+        stampS_[s] = st, distS_[s] = d, parentS_[s] = from;
+        pq.push({d, to});
+      }
+    }
+  };
+  // Arrive at a goal vertex through face f (or along an edge with faces f, f2).
+  auto arrive = [&](int64_t from, int v, int f, int f2, double d) {
+    for (size_t g = 0; g < q.goals.size(); ++g) {
+      const PathGoal& goal = q.goals[g];
+      if (goal.vertex != v) continue;
+      if (!goal.faces.empty() && !contains(goal.faces, f) && (f2 < 0 || !contains(goal.faces, f2))) continue;
+      if (d < goalDist[g]) {
+        goalDist[g] = d, goalParent[g] = from;
+        pq.push({d, kGoalBase + static_cast<int64_t>(g)});
+      }
+    }
+  };
+  auto vertexUsable = [&](int v) {
+    return !anchor_[v] && vertexPaths_[v] == 0 && blockV_[v] != st;
+  };
+  auto faceOk = [&](int f, bool atSource) {
+    if (!q.filter.allows(f)) return false;
+    return !atSource || q.sourceFaces.empty() || contains(q.sourceFaces, f);
+  };
+  // Try node `to` reached from `from` at distance d through face f (f2: second face for
+  // along-edge moves, -1 otherwise).
+  auto offer = [&](int64_t from, int64_t to, double d, int f, int f2) {
+    if (to >= 0) {
+      const int v = static_cast<int>(to);
+      if (isGoalVertex(v)) arrive(from, v, f, f2, d);
+      if (!vertexUsable(v)) return;
+    } else {
+      const int e = slotEdge_[static_cast<size_t>(-to - 1)];
+      if (blockE_[e] == st) return;
+    }
+    relax(from, to, d);
+  };
+
+  const Vec3 srcPos = mesh_.position(q.source);
+  stampV_[q.source] = st, distV_[q.source] = 0.0, parentV_[q.source] = kNone;
+  pq.push({0.0, q.source});
+  int reached = -1;
+  while (!pq.empty()) {
+    const auto [d, u] = pq.top();
+    pq.pop();
+    if (u >= kGoalBase) {
+      reached = static_cast<int>(u - kGoalBase);
+      break;
+    }
+    if (d > dist(u)) continue;
+    const Vec3 pu = u == q.source ? srcPos : nodePosition(u);
+    const bool atSource = (u == q.source);
+    auto cross = [&](int64_t w, int f) { offer(u, w, d + (nodePosition(w) - pu).norm(), f, -1); };
+    // Nodes on edge e (all of them) reached across face f.
+    auto crossEdge = [&](int e, int f) {
+      const int n = edgeNodes_[e];
+      for (int j = 0; j < n; ++j) cross(-1 - static_cast<int64_t>(slotBase_[e] + j), f);
+    };
+    if (u >= 0) {
+      const int v = static_cast<int>(u);
+      const int start = mesh_.outgoing(v);
+      int h = start;
+      do {
+        const int e = RefinedMesh::edgeOf(h);
+        const int f = mesh_.face(h), ft = mesh_.face(RefinedMesh::twin(h));
+        const bool okF = faceOk(f, atSource), okT = faceOk(ft, atSource);
+        // Along the edge v -> x: the first node, or x itself.
+        if ((okF || okT) && edgePath_[e] < 0) {
+          int64_t w;
+          if (edgeNodes_[e] == 0) {
+            w = mesh_.to(h);
+          } else {
+            const bool fwd = (h & 1) == 0;  // halfedge 2e runs from(2e) -> to(2e)
+            const int j = fwd ? 0 : edgeNodes_[e] - 1;
+            w = -1 - static_cast<int64_t>(slotBase_[e] + j);
+          }
+          offer(u, w, d + (nodePosition(w) - pu).norm(), okF ? f : ft, okF && okT ? ft : -1);
+        }
+        // Across face f: every node of the opposite edge.
+        if (okF) crossEdge(RefinedMesh::edgeOf(mesh_.next(h)), f);
+        h = mesh_.rotateCCW(h);
+      } while (h != start);
+    } else {
+      const int s = static_cast<int>(-u - 1);
+      const int e = slotEdge_[s];
+      const int j = s - slotBase_[e], n = edgeNodes_[e];
+      const int f0 = mesh_.face(2 * e), f1 = mesh_.face(2 * e + 1);
+      const bool ok0 = faceOk(f0, false), ok1 = faceOk(f1, false);
+      if (ok0 || ok1) {
+        const int ff = ok0 ? f0 : f1, f2 = ok0 && ok1 ? f1 : -1;
+        const int64_t prevNode = j == 0 ? mesh_.from(2 * e) : -1 - static_cast<int64_t>(slotBase_[e] + j - 1);
+        const int64_t nextNode = j == n - 1 ? mesh_.to(2 * e) : -1 - static_cast<int64_t>(slotBase_[e] + j + 1);
+        offer(u, prevNode, d + (nodePosition(prevNode) - pu).norm(), ff, f2);
+        offer(u, nextNode, d + (nodePosition(nextNode) - pu).norm(), ff, f2);
+      }
+      for (int side = 0; side < 2; ++side) {
+        const int h = 2 * e + side;
+        const int f = mesh_.face(h);
+        if (!faceOk(f, false)) continue;
+        const int hn = mesh_.next(h), hp = mesh_.next(hn);
+        cross(mesh_.to(hn), f);  // the opposite corner
+        crossEdge(RefinedMesh::edgeOf(hn), f);
+        crossEdge(RefinedMesh::edgeOf(hp), f);
+      }
+    }
+  }
+  if (reached < 0) return result;
+
+  // Back-track, then shortcut: no two non-consecutive nodes may share a face, so that cutting
+  // the path into the mesh turns every step into an edge (see commit).
+  std::vector<int64_t> nodes;
+  nodes.push_back(q.goals[reached].vertex);
+  for (int64_t n = goalParent[reached]; n != kNone;) {
+    nodes.push_back(n);
+    n = n >= 0 ? parentV_[n] : parentS_[static_cast<size_t>(-n - 1)];
+  }
+  std::reverse(nodes.begin(), nodes.end());
+
+  auto facesOf = [&](int64_t n, size_t index, std::vector<int>& out) {
+    out.clear();
+    if (n >= 0) {
+      const int v = static_cast<int>(n);
+      const int start = mesh_.outgoing(v);
+      int h = start;
+      do {
+        const int f = mesh_.face(h);
+        bool ok = q.filter.allows(f);
+        if (index == 0 && !q.sourceFaces.empty()) ok = ok && contains(q.sourceFaces, f);
+        if (index + 1 == nodes.size() && !q.goals[reached].faces.empty()) ok = ok && contains(q.goals[reached].faces, f);
+        if (ok) out.push_back(f);
+        h = mesh_.rotateCCW(h);
+      } while (h != start);
+    } else {
+      const int e = slotEdge_[static_cast<size_t>(-n - 1)];
+      for (int side = 0; side < 2; ++side)
+        if (q.filter.allows(mesh_.face(2 * e + side))) out.push_back(mesh_.face(2 * e + side));
+    }
+  };
+  std::unordered_map<int, size_t> last;
+  std::vector<int> fs;
+  for (size_t i = 0; i < nodes.size(); ++i) {
+    facesOf(nodes[i], i, fs);
+    for (int f : fs) last[f] = i;
+  }
+  std::vector<int64_t> taut;
+  for (size_t i = 0; i < nodes.size();) {
+    taut.push_back(nodes[i]);
+    if (i + 1 == nodes.size()) break;
+    facesOf(nodes[i], i, fs);
+    size_t j = i + 1;
+    for (int f : fs) j = std::max(j, last[f]);
+    // Two vertices sharing a face are joined by an edge: never along an existing path edge.
+    if (j > i + 1 && nodes[i] >= 0 && nodes[j] >= 0) {
+      const int h = mesh_.findHalfedge(static_cast<int>(nodes[i]), static_cast<int>(nodes[j]));
+      if (h >= 0 && edgePath_[RefinedMesh::edgeOf(h)] >= 0) j = i + 1;
+    }
+    i = j;
+  }
+  result.nodes = std::move(taut);
+  result.found = true;
+  result.goal = reached;
+  for (size_t i = 1; i < result.nodes.size(); ++i)
+    result.length += (nodePosition(result.nodes[i]) - nodePosition(result.nodes[i - 1])).norm();
+  return result;
+}
+
+Status PathTracer::commit(const TracedPath& path, int pathId, std::vector<int>& vertices) {
+  vertices.clear();
+  if (!path.found || path.nodes.size() < 2 || path.nodes.front() < 0 || path.nodes.back() < 0)
+    return Status::error(ErrorCode::InternalError, "commit of a path that does not join two vertices");
+  // Where each edge node lies, captured before any split renumbers the edge nodes.
+  struct OnEdge {
+    int edge;
+    double t;
+    int a, b;
+  };
+  std::vector<OnEdge> at(path.nodes.size(), OnEdge{-1, 0.0, -1, -1});
+  for (size_t i = 0; i < path.nodes.size(); ++i) {
+    const int64_t n = path.nodes[i];
+    if (n >= 0) continue;
+    const int s = static_cast<int>(-n - 1);
+    const int e = slotEdge_[s];
+    at[i] = {e, (s - slotBase_[e] + 1.0) / (edgeNodes_[e] + 1.0), mesh_.from(2 * e), mesh_.to(2 * e)};
+  }
+  // Splits already made on each original edge, as (t, vertex), to find the piece holding t.
+  std::unordered_map<int, std::vector<std::pair<double, int>>> splits;
+  for (size_t i = 0; i < path.nodes.size(); ++i) {
+    if (path.nodes[i] >= 0) {
+      vertices.push_back(static_cast<int>(path.nodes[i]));
+      continue;
+    }
+    const OnEdge& o = at[i];
+    auto& list = splits[o.edge];
+    double tlo = 0.0, thi = 1.0;
+    int vlo = o.a, vhi = o.b;
+    for (const auto& [t, v] : list) {
+      if (t < o.t && t > tlo) tlo = t, vlo = v;
+      if (t > o.t && t < thi) thi = t, vhi = v;
+    }
+    const int h = mesh_.findHalfedge(vlo, vhi);
+    if (h < 0) return Status::error(ErrorCode::InternalError, "edge node lost its edge while cutting a path");
+    const int m = mesh_.splitEdge(h, (o.t - tlo) / (thi - tlo));
+    onSplit();
+    list.emplace_back(o.t, m);
+    vertices.push_back(m);
+  }
+  for (size_t i = 1; i + 1 < vertices.size(); ++i) {
+    if (vertexPaths_[vertices[i]] != 0 || anchor_[vertices[i]]) {
+      vertices.clear();
+      return Status::error(ErrorCode::InternalError, "a traced path runs through a vertex already on a path");
+    }
+  }
+  for (size_t i = 0; i + 1 < vertices.size(); ++i) {
+    const int h = mesh_.findHalfedge(vertices[i], vertices[i + 1]);
+    if (h < 0 || edgePath_[RefinedMesh::edgeOf(h)] >= 0) {
+      vertices.clear();
+      return Status::error(ErrorCode::InternalError, "a traced path step is not a free mesh edge after cutting");
+    }
+  }
+  for (size_t i = 0; i + 1 < vertices.size(); ++i) {
+    const int e = RefinedMesh::edgeOf(mesh_.findHalfedge(vertices[i], vertices[i + 1]));
+    edgePath_[e] = pathId;
+    edgeNodes_[e] = 0;
+  }
+  for (int v : vertices) ++vertexPaths_[v];
+  return Status::success();
+}
+
+void PathTracer::release(const std::vector<int>& vertices, int pathId) {
+  for (size_t i = 0; i + 1 < vertices.size(); ++i) {
+    const int h = mesh_.findHalfedge(vertices[i], vertices[i + 1]);
+    if (h < 0) continue;
+    const int e = RefinedMesh::edgeOf(h);
+    if (edgePath_[e] != pathId) continue;
+    edgePath_[e] = -1;
+    computeEdgeNodes(e);
+  }
+  for (int v : vertices) --vertexPaths_[v];
+}
+
+}  // namespace cbd

@@ -1,0 +1,224 @@
+#include "cbd/source_layout.h"
+
+#include <algorithm>
+#include <chrono>
+#include <limits>
+#include <numeric>
+
+namespace cbd {
+namespace {
+
+double seconds(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+/// The paths of a layout under construction (ids are stable; removed ones stay as holes).
+struct PathSet {
+  std::vector<LayoutEdge> edges;
+  std::vector<char> alive;
+
+  int add(LayoutEdge e) {
+    edges.push_back(std::move(e));
+    alive.push_back(1);
+    return static_cast<int>(edges.size()) - 1;
+  }
+};
+
+}  // namespace
+
+SourceLayoutResult buildSourceLayout(const IndexedMesh& input, const std::vector<int>& anchors,
+                                     const SourceLayoutOptions& options) {
+  SourceLayoutResult r;
+  const int na = static_cast<int>(anchors.size());
+  if (na < 3) {
+    r.status = Status::error(ErrorCode::TooFewAnchors, "a layout needs at least 3 anchors");
+    return r;
+  }
+  for (int i = 0; i < na; ++i) {
+    if (anchors[i] < 0 || anchors[i] >= input.vertexCount()) {
+      r.status = Status::error(ErrorCode::InvalidArgument, "anchor " + std::to_string(i) + " is not a vertex");
+      return r;
+    }
+    for (int j = 0; j < i; ++j)
+      if (anchors[i] == anchors[j]) {
+        r.status = Status::error(ErrorCode::AnchorsShareVertex, "anchors " + std::to_string(j) + " and " +
+                                                                    std::to_string(i) + " are on the same vertex");
+        return r;
+      }
+  }
+  auto t0 = std::chrono::steady_clock::now();
+  Layout& L = r.layout;
+  L.mesh = RefinedMesh(input);
+  L.anchorVertices = anchors;
+  separateAnchors(L.mesh, anchors);
+  VoronoiResult vor = computeVoronoiClusters(L.mesh, anchors);
+  if (!vor.status) {
+    r.status = vor.status;
+    return r;
+  }
+  r.voronoiSeconds = seconds(t0);
+  t0 = std::chrono::steady_clock::now();
+  r.cuts = extractCuts(L.mesh, vor.faceCluster, na);
+
+  PathTracer tracer(L.mesh, options.edgeNodes);
+  tracer.faceLabel() = vor.faceCluster;
+  tracer.edgeLabel() = r.cuts.edgeCut;
+  for (int v : anchors) tracer.setAnchor(v, true);
+  PathSet paths;
+
+  // 1. One path across every cut, longest cuts (strongest Delaunay adjacencies) first.
+  std::vector<int> order(r.cuts.cuts.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(),
+                   [&](int a, int b) { return r.cuts.cuts[a].length > r.cuts.cuts[b].length; });
+  for (int c : order) {
+    const Cut& cut = r.cuts.cuts[c];
+    PathQuery q;
+    q.source = anchors[cut.i];
+    q.goals.push_back({anchors[cut.j], {}, 0});
+    q.filter = {&tracer.faceLabel(), cut.i, cut.j};
+    for (int o = 0; o < static_cast<int>(r.cuts.cuts.size()); ++o)
+      if (o != c && r.cuts.cuts[o].i == cut.i && r.cuts.cuts[o].j == cut.j) q.blockedEdgeLabels.push_back(o);
+    TracedPath tp = tracer.trace(q);
+    if (!tp.found) {
+      ++r.cutPathsFailed;
+      continue;
+    }
+    LayoutEdge e;
+    e.a = cut.i, e.b = cut.j, e.kind = EdgeKind::VoronoiCut, e.cut = c, e.eta = cut.eta, e.length = tp.length;
+    const int id = paths.add(e);
+    Status s = tracer.commit(tp, id, paths.edges[id].vertices);
+    if (!s) {
+      r.status = s;
+      return r;
+    }
+    ++r.cutPaths;
+  }
+
+  // 2. Triangulate every region that is not a triangle, with paths searched inside it.
+  std::vector<int> anchorOf;
+  auto refreshAnchorOf = [&] {
+    anchorOf.assign(L.mesh.vertexCount(), -1);
+    for (int i = 0; i < na; ++i) anchorOf[anchors[i]] = i;
+  };
+  const int maxExtra = options.maxTriangulationPaths >= 0 ? options.maxTriangulationPaths : 4 * na + 64;
+  std::vector<int> regionLabel;
+  for (int iteration = 0;; ++iteration) {
+    refreshAnchorOf();
+    RegionMap rm = analyzeRegions(L.mesh, tracer.edgePath(), anchorOf);
+    int bad = -1;
+    for (size_t i = 0; i < rm.regions.size() && bad < 0; ++i)
+      if (!rm.regions[i].isTriangle()) bad = static_cast<int>(i);
+    if (bad < 0) break;
+    const Region& reg = rm.regions[bad];
+    auto describe = [&] {
+      std::string s = "region " + std::to_string(bad) + " (" + std::to_string(reg.faces) + " faces, " +
+                      std::to_string(reg.loops.size()) + " boundary loops, corners";
+      for (const auto& l : reg.loops)
+        for (int c : l.corners) s += " " + std::to_string(c);
+      s += ", " + std::to_string(reg.interiorAnchors.size()) + " anchors inside)";
+      return s;
+    };
+    if (r.triangulationPaths >= maxExtra) {
+      r.status = Status::error(ErrorCode::LayoutFailed,
+                               "the source layout could not be triangulated after " + std::to_string(maxExtra) +
+                                   " extra paths; " + describe() + " remains; add anchors there");
+      return r;
+    }
+    // An empty 2-gon: two paths between the same anchors enclose nothing; drop one of them.
+    if (reg.loops.size() == 1 && reg.eulerCharacteristic == 1 && reg.interiorAnchors.empty() &&
+        reg.loops[0].corners.size() == 2) {
+      const int p0 = reg.loops[0].sides[0], p1 = reg.loops[0].sides[1];
+      const int drop = paths.edges[p0].length >= paths.edges[p1].length ? p0 : p1;
+      tracer.release(paths.edges[drop].vertices, drop);
+      paths.alive[drop] = 0;
+      ++r.removedPaths;
+      continue;
+    }
+    regionLabel = rm.faceRegion;
+    // Candidate links: (source anchor + wedge) -> goals (anchor + wedge).
+    struct End {
+      int anchor;
+      std::vector<int> faces;
+      int loop, pos;  // loop/position on the boundary, or -1 for an interior anchor
+    };
+    std::vector<End> ends;
+    for (int a : reg.interiorAnchors) ends.push_back({a, {}, -1, -1});
+    for (size_t l = 0; l < reg.loops.size(); ++l)
+      for (size_t k = 0; k < reg.loops[l].corners.size(); ++k)
+        ends.push_back({reg.loops[l].corners[k], cornerWedge(L.mesh, tracer.edgePath(), reg.loops[l].cornerHalfedge[k]),
+                        static_cast<int>(l), static_cast<int>(k)});
+    const bool disk = reg.loops.size() == 1 && reg.eulerCharacteristic == 1;
+    auto linkable = [&](const End& s, const End& g, bool strict) {
+      if (s.anchor == g.anchor) return false;
+      if (s.loop < 0 || g.loop < 0) return true;           // an interior anchor joins anything
+      if (s.loop != g.loop) return true;                   // joining two loops
+      const int m = static_cast<int>(reg.loops[s.loop].corners.size());
+      const int d = std::abs(s.pos - g.pos);
+      const bool adjacent = d == 1 || d == m - 1;
+      if (disk || strict) return !adjacent;                // a diagonal of the polygon
+      return true;                                         // a region with a handle
+    };
+    TracedPath best;
+    int bestSource = -1;
+    for (int pass = 0; pass < 2 && !best.found; ++pass) {
+      const bool strict = pass == 0;
+      if (!strict && disk) break;
+      for (size_t si = 0; si < ends.size(); ++si) {
+        const End& s = ends[si];
+        // Interior anchors first: they must be linked before anything else.
+        if (!reg.interiorAnchors.empty() && s.loop >= 0) continue;
+        PathQuery q;
+        q.source = anchors[s.anchor];
+        q.sourceFaces = s.faces;
+        q.filter = {&regionLabel, bad, bad};
+        for (size_t gi = 0; gi < ends.size(); ++gi)
+          if (gi != si && linkable(s, ends[gi], strict))
+            q.goals.push_back({anchors[ends[gi].anchor], ends[gi].faces, static_cast<int>(gi)});
+        if (q.goals.empty()) continue;
+        TracedPath tp = tracer.trace(q);
+        if (tp.found && (!best.found || tp.length < best.length)) {
+          best = tp;
+          best.goal = q.goals[tp.goal].tag;
+          bestSource = static_cast<int>(si);
+        }
+      }
+    }
+    if (!best.found) {
+      r.status = Status::error(ErrorCode::LayoutFailed,
+                               "the source layout cannot be completed: no path can split " + describe() +
+                                   "; add anchors there");
+      return r;
+    }
+    LayoutEdge e;
+    e.a = ends[bestSource].anchor, e.b = ends[best.goal].anchor, e.kind = EdgeKind::Triangulation;
+    e.length = best.length;
+    const int id = paths.add(e);
+    Status s = tracer.commit(best, id, paths.edges[id].vertices);
+    if (!s) {
+      r.status = s;
+      return r;
+    }
+    ++r.triangulationPaths;
+  }
+
+  // 3. Compact the surviving paths into the layout.
+  std::vector<int> newId(paths.edges.size(), -1);
+  for (size_t p = 0; p < paths.edges.size(); ++p)
+    if (paths.alive[p]) {
+      newId[p] = static_cast<int>(L.edges.size());
+      L.edges.push_back(std::move(paths.edges[p]));
+    }
+  L.edgePath = tracer.edgePath();
+  for (int& p : L.edgePath)
+    if (p >= 0) p = newId[p];
+  r.faceCluster = tracer.faceLabel();
+  if (Status s = assemblePatches(L); !s) {
+    r.status = s;
+    return r;
+  }
+  r.layoutSeconds = seconds(t0);
+  return r;
+}
+
+}  // namespace cbd

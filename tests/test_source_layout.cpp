@@ -1,0 +1,175 @@
+// Sec. 5.1: Voronoi clusters, cuts, cut paths with multiple linkages, triangulation; every
+// layout checked by validateLayout and by the counts a triangulation must have.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <set>
+
+#include "cbd/source_layout.h"
+#include "cbd/validate_input.h"
+#include "support/fixtures.h"
+
+using namespace cbd;
+namespace fx = cbd::fixtures;
+
+namespace {
+
+int nearestVertex(const IndexedMesh& m, const Vec3& p) {
+  int best = 0;
+  for (int v = 1; v < m.vertexCount(); ++v)
+    if ((m.positions[v] - p).squaredNorm() < (m.positions[best] - p).squaredNorm()) best = v;
+  return best;
+}
+
+// Farthest-point sampling of n vertices (deterministic, starting at vertex 0).
+std::vector<int> farthestPoints(const IndexedMesh& m, int n) {
+  std::vector<int> out{0};
+  std::vector<double> d(m.vertexCount(), 1e300);
+  while (static_cast<int>(out.size()) < n) {
+    const Vec3 p = m.positions[out.back()];
+    int best = -1;
+    for (int v = 0; v < m.vertexCount(); ++v) {
+      d[v] = std::min(d[v], (m.positions[v] - p).norm());
+      if (best < 0 || d[v] > d[best]) best = v;
+    }
+    out.push_back(best);
+  }
+  return out;
+}
+
+void expectValid(const SourceLayoutResult& r, const IndexedMesh& mesh, int anchors) {
+  ASSERT_TRUE(r.status.ok()) << r.status.message;
+  const MeshReport rep = validateMesh(mesh, "input");
+  const int g = rep.genus;
+  const int chi = 2 - 2 * g;
+  const LayoutCheck c = validateLayout(r.layout, chi);
+  EXPECT_TRUE(c.status.ok()) << c.status.message;
+  EXPECT_EQ(static_cast<int>(r.layout.edges.size()), 3 * (anchors - 2 + 2 * g));
+  EXPECT_EQ(static_cast<int>(r.layout.patches.size()), 2 * (anchors - 2 + 2 * g));
+  // The refined mesh is still a closed surface of the same genus.
+  const MeshReport refined = validateMesh(r.layout.mesh.toIndexed(), "refined");
+  EXPECT_TRUE(refined.status.ok()) << refined.status.message;
+  EXPECT_EQ(refined.genus, g);
+  // Every face belongs to a patch; every patch's faces are counted.
+  int faces = 0;
+  for (const Patch& p : r.layout.patches) faces += p.faces;
+  EXPECT_EQ(faces, r.layout.mesh.faceCount());
+}
+
+}  // namespace
+
+TEST(Voronoi, ClustersAreConnectedAndHoldTheirOneRing) {
+  const IndexedMesh m = fx::icosphere(3);
+  const std::vector<int> anchors = farthestPoints(m, 10);
+  RefinedMesh rm(m);
+  separateAnchors(rm, anchors);
+  const VoronoiResult v = computeVoronoiClusters(rm, anchors);
+  ASSERT_TRUE(v.status.ok()) << v.status.message;
+  for (size_t i = 0; i < anchors.size(); ++i) {
+    // One-ring.
+    int h = rm.outgoing(anchors[i]);
+    const int start = h;
+    do {
+      EXPECT_EQ(v.faceCluster[rm.face(h)], static_cast<int>(i));
+      h = rm.rotateCCW(h);
+    } while (h != start);
+    // Connected: flood fill inside the cluster reaches all its faces.
+    std::vector<char> seen(rm.faceCount(), 0);
+    std::vector<int> stack{rm.face(start)};
+    seen[stack[0]] = 1;
+    int count = 0;
+    while (!stack.empty()) {
+      const int f = stack.back();
+      stack.pop_back();
+      ++count;
+      for (int k = 0, e = rm.faceHalfedge(f); k < 3; ++k, e = rm.next(e)) {
+        const int g = rm.face(RefinedMesh::twin(e));
+        if (!seen[g] && v.faceCluster[g] == static_cast<int>(i)) seen[g] = 1, stack.push_back(g);
+      }
+    }
+    EXPECT_EQ(count, v.clusterSize[i]);
+  }
+  // Deterministic.
+  EXPECT_EQ(computeVoronoiClusters(rm, anchors).faceCluster, v.faceCluster);
+}
+
+TEST(Voronoi, SixAxisAnchorsGiveTwelveCuts) {
+  const IndexedMesh m = fx::icosphere(4);
+  std::vector<int> anchors;
+  for (const Vec3& d : {Vec3(1, 0, 0), Vec3(-1, 0, 0), Vec3(0, 1, 0), Vec3(0, -1, 0), Vec3(0, 0, 1), Vec3(0, 0, -1)})
+    anchors.push_back(nearestVertex(m, d));
+  RefinedMesh rm(m);
+  const VoronoiResult v = computeVoronoiClusters(rm, anchors);
+  ASSERT_TRUE(v.status.ok());
+  const CutsResult cuts = extractCuts(rm, v.faceCluster, 6);
+  // The cube-like Voronoi diagram: every pair except the 3 antipodal ones touches once.
+  EXPECT_EQ(cuts.cuts.size(), 12u);
+  for (const Cut& c : cuts.cuts) {
+    EXPECT_EQ(c.eta, 0);
+    EXPECT_EQ(c.endpoints.size(), 2u);
+    EXPECT_GT((m.positions[anchors[c.i]] - m.positions[anchors[c.j]]).norm(), 1.0);  // not antipodal
+    EXPECT_LT((m.positions[anchors[c.i]] - m.positions[anchors[c.j]]).norm(), 1.9);
+  }
+}
+
+TEST(SourceLayout, OctahedronOnASphere) {
+  const IndexedMesh m = fx::icosphere(3);
+  std::vector<int> anchors;
+  for (const Vec3& d : {Vec3(1, 0, 0), Vec3(-1, 0, 0), Vec3(0, 1, 0), Vec3(0, -1, 0), Vec3(0, 0, 1), Vec3(0, 0, -1)})
+    anchors.push_back(nearestVertex(m, d));
+  const SourceLayoutResult r = buildSourceLayout(m, anchors);
+  expectValid(r, m, 6);
+  EXPECT_EQ(r.layout.edges.size(), 12u);
+  EXPECT_EQ(r.layout.patches.size(), 8u);
+  EXPECT_EQ(r.triangulationPaths, 0);  // the Voronoi diagram is dual to the octahedron
+  // No edge joins antipodal anchors.
+  for (const LayoutEdge& e : r.layout.edges) EXPECT_NE(e.a / 2, e.b / 2);
+}
+
+TEST(SourceLayout, IcosahedronOnASphere) {
+  const IndexedMesh m = fx::icosphere(3);
+  std::vector<int> anchors;
+  for (int v = 0; v < 12; ++v) anchors.push_back(v);  // the icosahedron's own vertices
+  const SourceLayoutResult r = buildSourceLayout(m, anchors);
+  expectValid(r, m, 12);
+  EXPECT_EQ(r.layout.edges.size(), 30u);
+  EXPECT_EQ(r.layout.patches.size(), 20u);
+  EXPECT_EQ(r.layout.multipleLinkages(), 0);
+}
+
+TEST(SourceLayout, TorusWithSixAnchorsNeedsMultipleLinkages) {
+  const IndexedMesh m = fx::torus(2.0, 0.7, 60, 24);
+  std::vector<int> anchors;
+  for (int k = 0; k < 6; ++k) {
+    const double u = 2 * M_PI * k / 6;
+    const double v = (k % 2) ? M_PI : 0.0;  // alternately outside and inside the tube
+    anchors.push_back(nearestVertex(m, Vec3((2 + 0.7 * std::cos(v)) * std::cos(u), (2 + 0.7 * std::cos(v)) * std::sin(u), 0)));
+  }
+  const SourceLayoutResult r = buildSourceLayout(m, anchors);
+  expectValid(r, m, 6);
+  EXPECT_GE(r.layout.multipleLinkages(), 1);
+}
+
+TEST(SourceLayout, DoubleTorus) {
+  const IndexedMesh m = fx::holedPlate(2, 4, 20);
+  ASSERT_EQ(validateMesh(m, "dt").genus, 2);
+  const std::vector<int> anchors = farthestPoints(m, 16);
+  const SourceLayoutResult r = buildSourceLayout(m, anchors);
+  expectValid(r, m, 16);
+}
+
+TEST(SourceLayout, ManyAnchorsOnASphere) {
+  const IndexedMesh m = fx::icosphere(4);
+  const std::vector<int> anchors = farthestPoints(m, 40);
+  const SourceLayoutResult r = buildSourceLayout(m, anchors);
+  expectValid(r, m, 40);
+}
+
+TEST(SourceLayout, SingleEdgeNodeMode) {
+  const IndexedMesh m = fx::icosphere(3);
+  SourceLayoutOptions o;
+  o.edgeNodes.minEdgeNodes = 1;
+  o.edgeNodes.adaptive = false;
+  const SourceLayoutResult r = buildSourceLayout(m, farthestPoints(m, 12), o);
+  expectValid(r, m, 12);
+}
