@@ -1,0 +1,23 @@
+#pragma once
+/// @file layout_io.h
+/// Writing layouts for viewing in MeshLab: the refined mesh coloured per patch, the paths as an
+/// edge mesh, the Voronoi clusters coloured per face. Patch k gets the same colour on every
+/// surface, so corresponding patches of a source and a target layout match.
+
+#include <string>
+#include <vector>
+
+#include "cbd/layout.h"
+
+namespace cbd {
+
+/// A well-separated colour for index k (golden-ratio hues), as 8-bit RGB.
+std::array<unsigned char, 3> paletteColor(int k);
+
+/// Write `dir/layout.ply` (refined mesh, per-face colour by patch, face quality = patch index),
+/// `dir/paths.ply` (every layout edge as a polyline; vertex quality = layout edge index) and,
+/// when `faceCluster` is not empty, `dir/clusters.ply` (per-face colour by cluster). The folder
+/// is created when missing. Errors: OutputError.
+Status writeLayout(const Layout& layout, const std::vector<int>& faceCluster, const std::string& dir);
+
+}  // namespace cbd

@@ -1,0 +1,170 @@
+#!/usr/bin/env bash
+# `cbd check` end to end: the bundled real pair passes; each bad input gives its documented
+# status and exit code, one line on stderr, and leaves the input files untouched.
+# Usage: test_cli_check.sh CBD_BINARY EXAMPLES_DIR WORK_DIR
+set -uo pipefail
+CBD="$1"; EXAMPLES="$2"; WORK="$3"
+ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
+MESHES="$ROOT/third_party/cgal-data/meshes"
+rm -rf "$WORK"; mkdir -p "$WORK"; cd "$WORK"
+fails=0; passes=0
+ok()   { passes=$((passes+1)); echo "ok   - $*"; }
+bad()  { fails=$((fails+1));  echo "FAIL - $*"; }
+
+code_of() { "$CBD" exit-codes | awk -v n="$1" '$2==n {print $1}'; }
+
+# expect NAME STATUS -- args...
+expect() {
+  local name="$1" status="$2"; shift 3
+  local want; want=$(code_of "$status")
+  [ -n "$want" ] || { bad "$name: unknown status $status"; return; }
+  local before; before=$(cat "$@" 2>/dev/null | md5sum)
+  "$CBD" check "$@" --json "$WORK/$name.json" >"$WORK/$name.out" 2>"$WORK/$name.err"
+  local rc=$?
+  local got; got=$(sed -n 's/.*"status": "\([a-z_]*\)".*/\1/p' "$WORK/$name.json" 2>/dev/null)
+  local lines; lines=$(wc -l <"$WORK/$name.err")
+  if [ "$rc" = "$want" ] && [ "$got" = "$status" ]; then
+    if [ "$status" != ok ] && [ "$lines" != 1 ]; then bad "$name: expected one line on stderr, got $lines"; return; fi
+    ok "$name: exit $rc, status $got $( [ "$status" != ok ] && head -c 160 "$WORK/$name.err")"
+  else
+    bad "$name: expected exit $want/status $status, got exit $rc/status '$got': $(cat "$WORK/$name.err")"
+  fi
+}
+
+# --- procedural inputs -------------------------------------------------------------
+cat > octa.off <<'MESH'
+OFF
+6 8 0
+1 0 0
+-1 0 0
+0 1 0
+0 -1 0
+0 0 1
+0 0 -1
+3 0 2 4
+3 2 1 4
+3 1 3 4
+3 3 0 4
+3 2 0 5
+3 1 2 5
+3 3 1 5
+3 0 3 5
+MESH
+printf 'xp 1 0 0\nxm -1 0 0\nyp 0 1 0\nym 0 -1 0\nzp 0 0 1\nzm 0 0 -1\n' > octa.txt
+sed '$d' octa.off > open.off; sed -i 's/^6 8 0$/6 7 0/' open.off                     # one face removed
+sed 's/^3 0 2 4$/3 2 0 4/' octa.off > flipped.off                                   # one face reversed
+sed 's/^0 0 -1$/0 0 nan/' octa.off > nan.off
+printf 'OFF\n6 8 0\n1 0 0\n-1 0 0\n' > trunc.off
+: > empty.off
+printf 'OFF\n8 6 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n0 0 1\n1 0 1\n1 1 1\n0 1 1\n4 0 3 2 1\n4 4 5 6 7\n4 0 1 5 4\n4 1 2 6 5\n4 2 3 7 6\n4 3 0 4 7\n' > quads.off
+{ echo OFF; echo "12 16 0"; sed -n '3,8p' octa.off; sed -n '3,8p' octa.off | awk '{print $1+5, $2, $3}';
+  sed -n '9,16p' octa.off; sed -n '9,16p' octa.off | awk '{print 3, $2+6, $3+6, $4+6}'; } > two.off
+cat > fan.off <<'MESH'
+OFF
+5 3 0
+0 0 0
+0 0 1
+1 0 0.5
+-0.5 0.8 0.5
+-0.5 -0.8 0.5
+3 0 1 2
+3 1 0 3
+3 0 1 4
+MESH
+# genus 1: a 4x4 torus grid
+python3 - <<'PY'
+import math
+nu,nv=8,6
+with open('torus.off','w') as f:
+    f.write('OFF\n%d %d 0\n'%(nu*nv,2*nu*nv))
+    for i in range(nu):
+        for j in range(nv):
+            u=2*math.pi*i/nu; v=2*math.pi*j/nv
+            f.write('%r %r %r\n'%((2+0.7*math.cos(v))*math.cos(u),(2+0.7*math.cos(v))*math.sin(u),0.7*math.sin(v)))
+    idx=lambda i,j: (i%nu)*nv+(j%nv)
+    for i in range(nu):
+        for j in range(nv):
+            f.write('3 %d %d %d\n3 %d %d %d\n'%(idx(i,j),idx(i+1,j),idx(i+1,j+1),idx(i,j),idx(i+1,j+1),idx(i,j+1)))
+PY
+printf '0\n10\n20\n' > torus.vts
+printf 'xp 1 0 0\nxm -1 0 0\nyp 0 1 0\n' > octa3.txt
+printf 'xp 1 0 0\nxm -1 0 0\n' > octa2.txt
+printf 'xp 1 0 0\nxm -1 0 0\nyp 0 1 0\nym 0 -1 0\nzp 0 0 1\nWRONG 0 0 -1\n' > octa_wrong.txt
+printf 'xp 1 0 0\nxm -1 0 0\nyp 0 1 0\nxp 0 -1 0\n' > octa_dup.txt
+printf 'xp 1 0 0\nxm -1 0 0\nyp 0 1 0\nym 0 -1 0\nzp 0 0 1\nzm 0 0 -3\n' > octa_far.txt
+printf 'xp 1 0 0\nxm -1 0 0\nyp 0 1 0\nym 0 -1 0\nzp 0 0 1\nzm 0.99 0 0.01\n' > octa_share.txt
+printf '0\n1\n2\n99\n' > octa_range.vts
+printf '0\n1\n2\n' > octa_idx.vts
+printf '<!DOCTYPE PickedPoints>\n<PickedPoints>\n <point x="1" y="0" z="0" name="xp"/>\n <point x="1" y="0\n</PickedPoints>\n' > malformed.pp
+
+P=(--source-anchors octa.txt --target-anchors octa.txt)
+expect ok_octahedron        ok                   -- --source octa.off --target octa.off "${P[@]}"
+expect ok_index_lists       ok                   -- --source octa.off --target octa.off --source-anchors octa_idx.vts --target-anchors octa_idx.vts
+expect missing_mesh         file_not_found       -- --source nowhere.off --target octa.off "${P[@]}"
+expect missing_anchors      file_not_found       -- --source octa.off --target octa.off --source-anchors nowhere.pp --target-anchors octa.txt
+expect unsupported          unsupported_format   -- --source octa.txt --target octa.off "${P[@]}"
+expect empty_file           malformed_mesh       -- --source empty.off --target octa.off "${P[@]}"
+expect truncated            malformed_mesh       -- --source trunc.off --target octa.off "${P[@]}"
+expect quads                not_triangles        -- --source quads.off --target octa.off "${P[@]}"
+expect nan                  invalid_coordinates  -- --source octa.off --target nan.off "${P[@]}"
+expect open                 open_boundary        -- --source open.off --target octa.off "${P[@]}"
+expect nonmanifold_edge     non_manifold_edge    -- --source fan.off --target octa.off "${P[@]}"
+expect orientation          inconsistent_orientation -- --source flipped.off --target octa.off "${P[@]}"
+expect components           multiple_components  -- --source two.off --target octa.off "${P[@]}"
+expect genus                genus_mismatch       -- --source octa.off --target torus.off --source-anchors octa_idx.vts --target-anchors torus.vts
+expect malformed_pp         malformed_anchors    -- --source octa.off --target octa.off --source-anchors malformed.pp --target-anchors octa.txt
+expect name_mismatch        anchor_name_mismatch -- --source octa.off --target octa.off --source-anchors octa.txt --target-anchors octa_wrong.txt
+expect duplicate_name       duplicate_anchor_name -- --source octa.off --target octa.off --source-anchors octa_dup.txt --target-anchors octa.txt
+expect index_range          anchor_index_out_of_range -- --source octa.off --target octa.off --source-anchors octa_range.vts --target-anchors octa_range.vts
+expect off_surface          anchor_off_surface   -- --source octa.off --target octa.off --source-anchors octa.txt --target-anchors octa_far.txt
+expect share_vertex         anchors_share_vertex -- --source octa.off --target octa.off --source-anchors octa.txt --target-anchors octa_share.txt
+expect too_few              too_few_anchors      -- --source octa.off --target octa.off --source-anchors octa2.txt --target-anchors octa2.txt
+
+# Argument errors: exit 2 and a line on stderr.
+"$CBD" check --source octa.off >/dev/null 2>args.err; rc=$?
+[ "$rc" = 2 ] && [ -s args.err ] && ok "missing arguments: exit 2" || bad "missing arguments: exit $rc"
+"$CBD" check --help >help.out 2>&1; rc=$?
+[ "$rc" = 0 ] && grep -q -- --source-anchors help.out && ok "check --help" || bad "check --help: exit $rc"
+# An unwritable JSON path is an output error and the check result is not reported as ok.
+"$CBD" check --source octa.off --target octa.off "${P[@]}" --json /nonexistent/dir/r.json >/dev/null 2>json.err; rc=$?
+[ "$rc" = "$(code_of output_error)" ] && ok "unwritable --json: exit $rc" || bad "unwritable --json: exit $rc"
+
+# Inputs untouched by any run.
+[ "$(md5sum < octa.off)" = "$(md5sum < "$WORK/octa.off")" ] || bad "octa.off modified"
+
+# --- the bundled real example --------------------------------------------------------
+if [ -f "$MESHES/cow.off" ] && [ -f "$EXAMPLES/cow_picked_points.pp" ]; then
+  sum_before=$(md5sum "$MESHES/cow.off" "$MESHES/bull.off" "$EXAMPLES"/*.pp)
+  expect cow_bull ok -- --source "$MESHES/cow.off" --target "$MESHES/bull.off" \
+    --source-anchors "$EXAMPLES/cow_picked_points.pp" --target-anchors "$EXAMPLES/bull_picked_points.pp"
+  n=$(python3 -c "import json;d=json.load(open('cow_bull.json'));print(d['source']['anchors'], d['source']['genus'], d['target']['genus'], d['source']['vertices'])")
+  set -- $n
+  [ "$1" -ge 20 ] && [ "$2" = 0 ] && [ "$3" = 0 ] && [ "$4" = 2904 ] && ok "cow/bull report: $n" || bad "cow/bull report: $n"
+  [ "$sum_before" = "$(md5sum "$MESHES/cow.off" "$MESHES/bull.off" "$EXAMPLES"/*.pp)" ] && ok "real inputs untouched" || bad "real inputs modified"
+  # The source layout of the bundled example: outputs exist, counts are those of a triangulation.
+  "$CBD" layout --source "$MESHES/cow.off" --source-anchors "$EXAMPLES/cow_picked_points.pp" --out layout_cow \
+    --json layout_cow.json >/dev/null 2>layout.err; rc=$?
+  counts=$(python3 -c "import json;d=json.load(open('layout_cow.json'));l=d['layout'];print(d['status'],d['source']['anchors'],l['edges'],l['patches'])" 2>/dev/null)
+  set -- $counts
+  if [ "$rc" = 0 ] && [ "${1:-}" = ok ] && [ "$3" = $((3 * ($2 - 2))) ] && [ "$4" = $((2 * ($2 - 2))) ] \
+     && [ -s layout_cow/layout.ply ] && [ -s layout_cow/paths.ply ] && [ -s layout_cow/clusters.ply ]; then
+    ok "cbd layout on the cow: $counts"
+  else
+    bad "cbd layout on the cow: exit $rc, $counts $(cat layout.err)"
+  fi
+  "$CBD" layout --source "$MESHES/cow.off" --source-anchors "$EXAMPLES/cow_picked_points.pp" --out /proc/nope \
+    >/dev/null 2>&1; rc=$?
+  [ "$rc" = "$(code_of output_error)" ] && ok "cbd layout into an unwritable folder: exit $rc" || bad "unwritable layout folder: exit $rc"
+else
+  bad "bundled example missing: run scripts/setup.sh (cow.off) / examples/*.pp"
+fi
+
+# README's exit-code table is the output of `cbd exit-codes`.
+if diff <(sed -n '/exit-codes:begin/,/exit-codes:end/p' "$ROOT/README.md" | sed '1,2d;$d' | sed '$d') <("$CBD" exit-codes) >/dev/null; then
+  ok "README exit-code table matches cbd exit-codes"
+else
+  bad "README exit-code table differs from cbd exit-codes"
+fi
+
+echo "$passes passed, $fails failed"
+[ "$fails" = 0 ]
