@@ -14,6 +14,7 @@
 #include "cbd/anchor_sampling.h"
 #include "cbd/layout_io.h"
 #include "cbd/source_layout.h"
+#include "cbd/target_layout.h"
 #include "cbd/validate_input.h"
 
 namespace {
@@ -127,6 +128,7 @@ int runCheck(const PairArgs& a) {
 
 struct LayoutArgs {
   std::string mesh, anchors, out, jsonPath;
+  std::string target, targetAnchors;
   int minEdgeNodes = 3;
   bool singleEdgeNode = false;
   double snapTolerance = 0.01;
@@ -138,39 +140,61 @@ double elapsed(std::chrono::steady_clock::time_point t0) {
 
 int runLayout(const LayoutArgs& a) {
   json j;
-  cbd::Mesh mesh;
   const auto t0 = std::chrono::steady_clock::now();
-  cbd::LoadResult lr = cbd::loadMesh(a.mesh, mesh);
-  if (!lr.status) return finish(lr.status, j, a.jsonPath);
-  const cbd::IndexedMesh im = cbd::toIndexed(mesh);
-  cbd::MeshReport rep = cbd::validateMesh(im, "source", lr.hadPolygons);
-  j["source"] = meshJson(rep);
-  if (!rep.status) {
-    rep.status.message = "source mesh '" + a.mesh + "'" + rep.status.message.substr(std::string("source mesh").size());
-    return finish(rep.status, j, a.jsonPath);
+  const bool pair = !a.target.empty();
+  cbd::ValidationOptions vopt;
+  vopt.snapTolerance = a.snapTolerance;
+  cbd::IndexedMesh source, target;
+  std::vector<int> sourceAnchors, targetAnchors;
+  cbd::MeshReport sourceReport;
+  if (pair) {
+    cbd::LoadedInput in;
+    cbd::loadAndValidate({a.mesh, a.target, a.anchors, a.targetAnchors}, vopt, in);
+    j["source"] = meshJson(in.report.source);
+    j["target"] = meshJson(in.report.target);
+    if (!in.report.status) return finish(in.report.status, j, a.jsonPath);
+    j["source"]["anchors"] = j["target"]["anchors"] = in.report.anchors.size();
+    sourceReport = in.report.source;
+    source = std::move(in.source);
+    target = std::move(in.target);
+    for (const auto& s : in.report.anchors.source) sourceAnchors.push_back(s.vertex);
+    for (const auto& s : in.report.anchors.target) targetAnchors.push_back(s.vertex);
+  } else {
+    cbd::Mesh mesh;
+    cbd::LoadResult lr = cbd::loadMesh(a.mesh, mesh);
+    if (!lr.status) return finish(lr.status, j, a.jsonPath);
+    source = cbd::toIndexed(mesh);
+    sourceReport = cbd::validateMesh(source, "source", lr.hadPolygons, vopt);
+    j["source"] = meshJson(sourceReport);
+    if (!sourceReport.status) {
+      sourceReport.status.message =
+          "source mesh '" + a.mesh + "'" + sourceReport.status.message.substr(std::string("source mesh").size());
+      return finish(sourceReport.status, j, a.jsonPath);
+    }
+    const cbd::AnchorSet set = cbd::readAnchors(a.anchors);
+    if (!set.status) return finish(set.status, j, a.jsonPath);
+    std::vector<cbd::SnappedAnchor> snapped;
+    if (cbd::Status s = cbd::snapAnchors(source, set, a.snapTolerance, "source", snapped); !s)
+      return finish(s, j, a.jsonPath);
+    j["source"]["anchors"] = snapped.size();
+    if (snapped.size() < 3) {
+      return finish(cbd::Status::error(cbd::ErrorCode::TooFewAnchors,
+                                       a.anchors + ": " + std::to_string(snapped.size()) +
+                                           " anchors; a layout needs at least 3"),
+                    j, a.jsonPath);
+    }
+    for (const auto& s : snapped) sourceAnchors.push_back(s.vertex);
   }
-  for (const auto& w : rep.warnings) std::fprintf(stderr, "cbd: warning: %s\n", w.c_str());
-  const cbd::AnchorSet set = cbd::readAnchors(a.anchors);
-  if (!set.status) return finish(set.status, j, a.jsonPath);
-  std::vector<cbd::SnappedAnchor> snapped;
-  if (cbd::Status s = cbd::snapAnchors(im, set, a.snapTolerance, "source", snapped); !s) return finish(s, j, a.jsonPath);
-  j["source"]["anchors"] = snapped.size();
-  if (snapped.size() < 3) {
-    return finish(cbd::Status::error(cbd::ErrorCode::TooFewAnchors,
-                                     a.anchors + ": " + std::to_string(snapped.size()) + " anchors; a layout needs at least 3"),
-                  j, a.jsonPath);
-  }
-  std::vector<int> anchors;
-  for (const auto& s : snapped) anchors.push_back(s.vertex);
+  for (const auto& w : sourceReport.warnings) std::fprintf(stderr, "cbd: warning: %s\n", w.c_str());
+
   cbd::SourceLayoutOptions opt;
   opt.edgeNodes.minEdgeNodes = a.singleEdgeNode ? 1 : a.minEdgeNodes;
   opt.edgeNodes.adaptive = !a.singleEdgeNode;
-  const cbd::SourceLayoutResult r = cbd::buildSourceLayout(im, anchors, opt);
+  const cbd::SourceLayoutResult r = cbd::buildSourceLayout(source, sourceAnchors, opt);
   j["timing_s"] = {{"voronoi", r.voronoiSeconds}, {"source_layout", r.layoutSeconds}};
   if (!r.status) return finish(r.status, j, a.jsonPath);
-  const cbd::LayoutCheck check = cbd::validateLayout(r.layout, rep.eulerCharacteristic);
-  if (!check.status) return finish(check.status, j, a.jsonPath);
-  if (cbd::Status s = cbd::writeLayout(r.layout, r.faceCluster, a.out); !s) return finish(s, j, a.jsonPath);
+  if (const cbd::LayoutCheck c = cbd::validateLayout(r.layout, sourceReport.eulerCharacteristic); !c.status)
+    return finish(c.status, j, a.jsonPath);
   j["layout"] = {{"edges", r.layout.edges.size()},
                  {"patches", r.layout.patches.size()},
                  {"multi_linkages", r.layout.multipleLinkages()},
@@ -178,14 +202,41 @@ int runLayout(const LayoutArgs& a) {
                  {"cut_paths_failed", r.cutPathsFailed},
                  {"triangulation_paths", r.triangulationPaths},
                  {"removed_paths", r.removedPaths}};
+  cbd::TargetLayoutResult tr;
+  if (pair) {
+    cbd::TargetLayoutOptions topt;
+    topt.edgeNodes = opt.edgeNodes;
+    tr = cbd::buildTargetLayout(r.layout, target, targetAnchors, topt);
+    j["timing_s"]["target_voronoi"] = tr.voronoiSeconds;
+    j["timing_s"]["target_layout"] = tr.layoutSeconds;
+    if (!tr.status) return finish(tr.status, j, a.jsonPath);
+    if (const cbd::LayoutCheck c = cbd::validateLayout(tr.layout, sourceReport.eulerCharacteristic); !c.status)
+      return finish(c.status, j, a.jsonPath);
+    j["layout"]["target"] = {{"in_clusters", tr.embeddedInClusters},
+                             {"in_region", tr.embeddedInRegion},
+                             {"postponements", tr.postponements},
+                             {"rejected_paths", tr.rejectedPaths}};
+  }
+  const std::string srcDir = pair ? a.out + "/source" : a.out;
+  if (cbd::Status s = cbd::writeLayout(r.layout, r.faceCluster, srcDir); !s) return finish(s, j, a.jsonPath);
+  if (pair)
+    if (cbd::Status s = cbd::writeLayout(tr.layout, tr.faceCluster, a.out + "/target"); !s) return finish(s, j, a.jsonPath);
   j["timing_s"]["total"] = elapsed(t0);
-  std::printf("source  %s: %d vertices, %d faces, genus %d, %zu anchors\n", a.mesh.c_str(), rep.vertices, rep.faces,
-              rep.genus, anchors.size());
+  std::printf("source  %s: %d vertices, %d faces, genus %d, %zu anchors\n", a.mesh.c_str(), sourceReport.vertices,
+              sourceReport.faces, sourceReport.genus, sourceAnchors.size());
   std::printf("layout  %zu edges (%d across Voronoi cuts, %d triangulating), %zu patches, %d multiple linkages\n",
               r.layout.edges.size(), r.cutPaths - r.removedPaths, r.triangulationPaths, r.layout.patches.size(),
               r.layout.multipleLinkages());
-  std::printf("time    voronoi %.3f s, layout %.3f s\n", r.voronoiSeconds, r.layoutSeconds);
-  std::printf("wrote   %s/layout.ply, %s/paths.ply, %s/clusters.ply\n", a.out.c_str(), a.out.c_str(), a.out.c_str());
+  std::printf("time    voronoi %.3f s, source layout %.3f s", r.voronoiSeconds, r.layoutSeconds);
+  if (pair) std::printf(", target layout %.3f s", tr.voronoiSeconds + tr.layoutSeconds);
+  std::printf("\n");
+  if (pair) {
+    std::printf("target  %s: same layout traced (%d paths inside the two clusters, %d in the whole region)\n",
+                a.target.c_str(), tr.embeddedInClusters, tr.embeddedInRegion);
+    std::printf("wrote   %s/{source,target}/{layout,paths,clusters}.ply\n", a.out.c_str());
+  } else {
+    std::printf("wrote   %s/{layout,paths,clusters}.ply\n", a.out.c_str());
+  }
   return finish(cbd::Status::success(), j, a.jsonPath);
 }
 
@@ -234,10 +285,17 @@ int main(int argc, char** argv) {
   LayoutArgs layout;
   CLI::App* cmdLayout = app.add_subcommand(
       "layout",
-      "Build the base domain on one mesh (Sec. 5.1): Voronoi clusters of the anchors, a path across "
-      "every cut, triangulation of the rest. Writes OUT/layout.ply (patches), OUT/paths.ply, OUT/clusters.ply.");
+      "Build the base domain on the source (Sec. 5.1): Voronoi clusters of the anchors, a path across "
+      "every cut, triangulation of the rest; with --target, trace the same layout on the target (Sec. 5.2). "
+      "Writes layout.ply (faces coloured by patch), paths.ply and clusters.ply per surface.");
   cmdLayout->add_option("--source,-s", layout.mesh, "mesh (.ply, .off, .obj, .stl)")->required();
   cmdLayout->add_option("--source-anchors", layout.anchors, "anchors (.pp, vertex list or name x y z)")->required();
+  auto* tgtOpt = cmdLayout->add_option("--target,-t", layout.target,
+                                       "target mesh: also trace the same layout on it (Procedure 1); outputs go "
+                                       "to OUT/source and OUT/target, corresponding patches in the same colour");
+  cmdLayout->add_option("--target-anchors", layout.targetAnchors, "target anchors, matched to the source's by name")
+      ->needs(tgtOpt);
+  tgtOpt->needs("--target-anchors");
   cmdLayout->add_option("--out,-o", layout.out, "output folder (created when missing)")->required();
   cmdLayout->add_option("--min-edge-nodes", layout.minEdgeNodes, "b: minimum edge nodes per edge")
       ->capture_default_str()

@@ -1,0 +1,56 @@
+#pragma once
+/// @file target_layout.h
+/// Sec. 5.2 and Procedure 1 of Kwok et al. 2012: the common base domain on the target. The
+/// source layout's edges are traced between the corresponding target anchors, in the paper's
+/// order: (a) pairs with one source edge whose target clusters share exactly one cut, (b) pairs
+/// with one source edge whose target clusters share no cut, (c) multiple linkages, postponed
+/// while two of them would leave an anchor in the same sector, and retried.
+///
+/// Every path obeys the constraints of Praun et al. 2001 that make the two layouts isomorphic:
+/// no crossing (face regions, as on the source); cyclic order (it leaves both anchors inside the
+/// sector that the source's rotation system prescribes among the edges embedded so far); no
+/// blocking (it stays inside the region of the partial target layout that corresponds to the
+/// source region it lies in, and after it is cut in, the regions of the partial layouts on both
+/// surfaces have the same boundaries, edge for edge, and the same anchors inside). A path is
+/// searched first inside the two anchors' target clusters (fast), then inside the whole region.
+
+#include <string>
+#include <vector>
+
+#include "cbd/layout.h"
+#include "cbd/path_tracer.h"
+#include "cbd/voronoi.h"
+
+namespace cbd {
+
+/// Options of `buildTargetLayout`.
+struct TargetLayoutOptions {
+  EdgeNodeOptions edgeNodes;  ///< as on the source
+};
+
+/// Result of `buildTargetLayout`.
+struct TargetLayoutResult {
+  Status status;                  ///< LayoutFailed names the edge and the reason
+  Layout layout;                  ///< isomorphic to the source: same edge ids, patch k = source patch k
+  std::vector<int> faceCluster;   ///< target Voronoi cluster of every face of layout.mesh
+  CutsResult cuts;                ///< target cuts
+  int embeddedInClusters = 0;     ///< paths found inside the two target clusters
+  int embeddedInRegion = 0;       ///< paths that needed the whole region
+  int postponements = 0;          ///< times an edge was postponed (ambiguous sector or no valid path yet)
+  int rejectedPaths = 0;          ///< traced paths undone because they blocked (region mismatch)
+  double voronoiSeconds = 0.0;
+  double layoutSeconds = 0.0;
+};
+
+/// Trace the source layout on the target surface. `targetAnchors[i]` corresponds to source
+/// anchor i. Errors: InvalidArgument (anchor count or indices), LayoutFailed.
+TargetLayoutResult buildTargetLayout(const Layout& source, const IndexedMesh& target,
+                                     const std::vector<int>& targetAnchors, const TargetLayoutOptions& options = {});
+
+/// Check that two layouts are isomorphic with the identity correspondence: same anchors count,
+/// same edges (same anchor pairs), same patches in the same order (same corners, same sides
+/// with the same directions), same rotation system up to a cyclic shift. InternalError naming
+/// the first difference.
+Status checkIsomorphic(const Layout& source, const Layout& target);
+
+}  // namespace cbd

@@ -1,0 +1,342 @@
+#include "cbd/target_layout.h"
+
+#include <algorithm>
+#include <chrono>
+#include <map>
+#include <numeric>
+#include <set>
+#include <tuple>
+
+namespace cbd {
+namespace {
+
+double seconds(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+/// Region signatures: what must agree between the partial layouts on the two surfaces.
+using LoopSig = std::vector<std::pair<int, int>>;  // (edge, direction) around the loop
+struct RegionSig {
+  int euler = 0;
+  std::vector<int> inside;
+  std::vector<LoopSig> loops;
+  bool operator<(const RegionSig& o) const { return std::tie(euler, inside, loops) < std::tie(o.euler, o.inside, o.loops); }
+  bool operator==(const RegionSig& o) const { return euler == o.euler && inside == o.inside && loops == o.loops; }
+};
+
+std::vector<RegionSig> signatures(const RefinedMesh& mesh, const std::vector<int>& edgePath,
+                                  const std::vector<int>& anchorOf, const std::vector<LayoutEdge>& edges) {
+  RegionMap rm = analyzeRegions(mesh, edgePath, anchorOf);
+  std::vector<RegionSig> out;
+  for (const Region& r : rm.regions) {
+    RegionSig s;
+    s.euler = r.eulerCharacteristic;
+    s.inside = r.interiorAnchors;
+    std::sort(s.inside.begin(), s.inside.end());
+    for (const RegionLoop& l : r.loops) {
+      LoopSig ls;
+      for (size_t k = 0; k < l.sides.size(); ++k) ls.emplace_back(l.sides[k], edges[l.sides[k]].a == l.corners[k] ? 1 : 0);
+      std::rotate(ls.begin(), std::min_element(ls.begin(), ls.end()), ls.end());
+      s.loops.push_back(ls);
+    }
+    std::sort(s.loops.begin(), s.loops.end());
+    out.push_back(std::move(s));
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+/// Outgoing halfedge of an embedded path at its anchor end `v`.
+int leavingHalfedge(const RefinedMesh& m, const std::vector<int>& chain, int v) {
+  if (chain.front() == v) return m.findHalfedge(chain[0], chain[1]);
+  return m.findHalfedge(chain.back(), chain[chain.size() - 2]);
+}
+
+}  // namespace
+
+Status checkIsomorphic(const Layout& s, const Layout& t) {
+  auto fail = [](const std::string& what) { return Status::error(ErrorCode::InternalError, "layouts differ: " + what); };
+  if (s.anchorCount() != t.anchorCount()) return fail("anchor counts");
+  if (s.edges.size() != t.edges.size()) return fail("edge counts " + std::to_string(s.edges.size()) + " and " + std::to_string(t.edges.size()));
+  if (s.patches.size() != t.patches.size()) return fail("patch counts");
+  for (size_t e = 0; e < s.edges.size(); ++e)
+    if (s.edges[e].a != t.edges[e].a || s.edges[e].b != t.edges[e].b) return fail("edge " + std::to_string(e) + " joins other anchors");
+  for (size_t p = 0; p < s.patches.size(); ++p)
+    if (s.patches[p].corners != t.patches[p].corners || s.patches[p].edges != t.patches[p].edges ||
+        s.patches[p].forward != t.patches[p].forward)
+      return fail("patch " + std::to_string(p));
+  for (int a = 0; a < s.anchorCount(); ++a) {
+    const auto& rs = s.rotation[a];
+    auto rt = t.rotation[a];
+    if (rs.size() != rt.size()) return fail("degree of anchor " + std::to_string(a));
+    if (rs.empty()) continue;
+    auto it = std::find(rt.begin(), rt.end(), rs[0]);
+    if (it == rt.end()) return fail("rotation at anchor " + std::to_string(a));
+    std::rotate(rt.begin(), it, rt.end());
+    if (rs != rt) return fail("rotation at anchor " + std::to_string(a));
+  }
+  return Status::success();
+}
+
+TargetLayoutResult buildTargetLayout(const Layout& src, const IndexedMesh& target, const std::vector<int>& anchors,
+                                     const TargetLayoutOptions& options) {
+  TargetLayoutResult r;
+  const int na = src.anchorCount();
+  if (static_cast<int>(anchors.size()) != na) {
+    r.status = Status::error(ErrorCode::InvalidArgument, "the target has " + std::to_string(anchors.size()) +
+                                                             " anchors, the source layout " + std::to_string(na));
+    return r;
+  }
+  for (int i = 0; i < na; ++i)
+    if (anchors[i] < 0 || anchors[i] >= target.vertexCount()) {
+      r.status = Status::error(ErrorCode::InvalidArgument, "target anchor " + std::to_string(i) + " is not a vertex");
+      return r;
+    }
+  auto t0 = std::chrono::steady_clock::now();
+  Layout& L = r.layout;
+  L.mesh = RefinedMesh(target);
+  L.anchorVertices = anchors;
+  separateAnchors(L.mesh, anchors);
+  VoronoiResult vor = computeVoronoiClusters(L.mesh, anchors);
+  if (!vor.status) {
+    r.status = vor.status;
+    return r;
+  }
+  r.voronoiSeconds = seconds(t0);
+  t0 = std::chrono::steady_clock::now();
+  r.cuts = extractCuts(L.mesh, vor.faceCluster, na);
+
+  PathTracer tracer(L.mesh, options.edgeNodes);
+  tracer.faceLabel() = vor.faceCluster;
+  for (int v : anchors) tracer.setAnchor(v, true);
+
+  const int ne = static_cast<int>(src.edges.size());
+  L.edges.assign(ne, LayoutEdge{});
+  for (int e = 0; e < ne; ++e) {
+    L.edges[e].a = src.edges[e].a;
+    L.edges[e].b = src.edges[e].b;
+    L.edges[e].kind = src.edges[e].kind;
+  }
+  // Source edges per anchor pair, and target cuts per pair.
+  std::map<std::pair<int, int>, int> sourceLinks, targetCuts;
+  for (const LayoutEdge& e : src.edges) ++sourceLinks[std::minmax(e.a, e.b)];
+  for (const Cut& c : r.cuts.cuts) ++targetCuts[{c.i, c.j}];
+  auto group = [&](int e) {
+    const auto key = std::minmax(src.edges[e].a, src.edges[e].b);
+    if (sourceLinks[key] > 1) return 2;  // (c) multiple linkage
+    const int cuts = targetCuts.count(key) ? targetCuts[key] : 0;
+    if (cuts == 1) return 0;             // (a)
+    if (cuts == 0) return 1;             // (b)
+    return 2;                            // one source edge, several target cuts: like (c)
+  };
+  std::vector<int> pending(ne);
+  std::iota(pending.begin(), pending.end(), 0);
+  std::stable_sort(pending.begin(), pending.end(), [&](int x, int y) {
+    const int gx = group(x), gy = group(y);
+    return gx != gy ? gx < gy : src.edges[x].length < src.edges[y].length;
+  });
+
+  // The source's partial layout: its refined mesh with only the embedded edges as walls.
+  std::vector<int> srcPartial(src.mesh.edgeCount(), -1);
+  std::vector<char> embedded(ne, 0);
+  std::vector<int> srcAnchorOf(src.mesh.vertexCount(), -1), tgtAnchorOf;
+  for (int i = 0; i < na; ++i) srcAnchorOf[src.anchorVertices[i]] = i;
+  auto refreshTargetAnchorOf = [&] {
+    tgtAnchorOf.assign(L.mesh.vertexCount(), -1);
+    for (int i = 0; i < na; ++i) tgtAnchorOf[anchors[i]] = i;
+  };
+  auto setSourceEdge = [&](int e, int value) {
+    const auto& chain = src.edges[e].vertices;
+    for (size_t k = 0; k + 1 < chain.size(); ++k)
+      srcPartial[RefinedMesh::edgeOf(src.mesh.findHalfedge(chain[k], chain[k + 1]))] = value;
+  };
+
+  // Sector at anchor `a` for source edge e: the embedded neighbours before and after e in the
+  // source rotation, and the target faces between them (counter-clockwise).
+  struct Sector {
+    int before = -1, after = -1;
+    std::vector<int> faces;
+  };
+  auto sectorAt = [&](int e, int a, int occurrence) {
+    Sector s;
+    const auto& rot = src.rotation[a];
+    const int n = static_cast<int>(rot.size());
+    int pos = -1, seen = 0;
+    for (int k = 0; k < n; ++k)
+      if (rot[k] == e && seen++ == occurrence) pos = k;
+    for (int k = 1; k < n; ++k) {
+      const int x = rot[(pos - k + n) % n];
+      if (x != e && embedded[x]) { s.before = x; break; }
+    }
+    for (int k = 1; k < n; ++k) {
+      const int x = rot[(pos + k) % n];
+      if (x != e && embedded[x]) { s.after = x; break; }
+    }
+    const RefinedMesh& m = L.mesh;
+    const int v = anchors[a];
+    if (s.before < 0) {  // nothing embedded at a yet: every face around it
+      const int h0 = m.outgoing(v);
+      int h = h0;
+      do {
+        s.faces.push_back(m.face(h));
+        h = m.rotateCCW(h);
+      } while (h != h0);
+      return s;
+    }
+    const int hb = leavingHalfedge(m, L.edges[s.before].vertices, v);
+    const int ha = leavingHalfedge(m, L.edges[s.after].vertices, v);
+    int h = hb;
+    do {
+      s.faces.push_back(m.face(h));
+      h = m.rotateCCW(h);
+    } while (h != ha);
+    return s;
+  };
+  auto ambiguous = [&](int e) {
+    // Another pending edge between the same anchors that would leave `a` in the same sector.
+    const LayoutEdge& x = src.edges[e];
+    for (int o : pending) {
+      if (o == e || embedded[o]) continue;
+      const LayoutEdge& y = src.edges[o];
+      if (std::minmax(x.a, x.b) != std::minmax(y.a, y.b)) continue;
+      const Sector s1 = sectorAt(e, x.a, 0), s2 = sectorAt(o, x.a, 0);
+      if (s1.before == s2.before && s1.after == s2.after) return true;
+    }
+    return false;
+  };
+
+  std::vector<int> queryLabel;
+  std::string lastReason;
+  auto tryEmbed = [&](int e) -> int {  // 1 embedded, 0 not now, -1 internal error (r.status set)
+    const LayoutEdge& se = src.edges[e];
+    const Sector sa = sectorAt(e, se.a, 0), sb = sectorAt(e, se.b, 0);
+    refreshTargetAnchorOf();
+    const RegionMap rm = analyzeRegions(L.mesh, tracer.edgePath(), tgtAnchorOf);
+    const int region = rm.faceRegion[sa.faces.front()];
+    if (rm.faceRegion[sb.faces.front()] != region) {
+      lastReason = "its two sectors lie in different regions of the partial target layout";
+      return 0;
+    }
+    // The partial source layout after this edge: what the target must reproduce.
+    setSourceEdge(e, e);
+    const std::vector<RegionSig> want = signatures(src.mesh, srcPartial, srcAnchorOf, src.edges);
+    setSourceEdge(e, -1);
+    for (int attempt = 0; attempt < 2; ++attempt) {
+      // 0: inside the two target clusters and the region; 1: the whole region.
+      queryLabel.assign(L.mesh.faceCount(), 0);
+      for (int f = 0; f < L.mesh.faceCount(); ++f) {
+        const int c = tracer.faceLabel()[f];
+        if (rm.faceRegion[f] == region && (attempt == 1 || c == se.a || c == se.b)) queryLabel[f] = 1;
+      }
+      PathQuery q;
+      q.source = anchors[se.a];
+      q.sourceFaces = sa.faces;
+      q.goals.push_back({anchors[se.b], sb.faces, 0});
+      q.filter = {&queryLabel, 1, 1};
+      TracedPath tp = tracer.trace(q);
+      if (!tp.found) {
+        lastReason = attempt == 0 ? "no path inside the two target clusters" : "no path inside its region";
+        continue;
+      }
+      std::vector<int> chain;
+      if (Status s = tracer.commit(tp, e, chain); !s) {
+        r.status = s;
+        return -1;
+      }
+      refreshTargetAnchorOf();
+      if (signatures(L.mesh, tracer.edgePath(), tgtAnchorOf, src.edges) == want) {
+        L.edges[e].vertices = std::move(chain);
+        L.edges[e].length = tp.length;
+        (attempt == 0 ? r.embeddedInClusters : r.embeddedInRegion)++;
+        return 1;
+      }
+      tracer.release(chain, e);
+      ++r.rejectedPaths;
+      lastReason = "its shortest path would enclose other anchors than on the source (blocking)";
+    }
+    return 0;
+  };
+
+  bool force = false;
+  while (!pending.empty()) {
+    bool progress = false;
+    for (size_t k = 0; k < pending.size();) {
+      const int e = pending[k];
+      if (!force && ambiguous(e)) {
+        ++r.postponements;
+        ++k;
+        continue;
+      }
+      const int res = tryEmbed(e);
+      if (res < 0) return r;
+      if (res == 0) {
+        ++r.postponements;
+        ++k;
+        continue;
+      }
+      embedded[e] = 1;
+      setSourceEdge(e, e);
+      pending.erase(pending.begin() + static_cast<long>(k));
+      progress = true;
+      force = false;
+    }
+    if (!progress) {
+      if (!force) {
+        force = true;
+        continue;
+      }
+      const LayoutEdge& se = src.edges[pending.front()];
+      r.status = Status::error(ErrorCode::LayoutFailed,
+                               "the target layout cannot be completed: edge " + std::to_string(pending.front()) +
+                                   " between anchors " + std::to_string(se.a) + " and " + std::to_string(se.b) +
+                                   " (" + std::to_string(pending.size()) + " edges left): " + lastReason +
+                                   "; check that these anchors correspond, or add anchors nearby");
+      return r;
+    }
+  }
+
+  L.edgePath = tracer.edgePath();
+  r.faceCluster = tracer.faceLabel();
+  if (Status s = assemblePatches(L); !s) {
+    r.status = s;
+    return r;
+  }
+  // Order the target patches like the source's: patch k corresponds to source patch k.
+  std::map<std::array<int, 3>, int> byEdges;
+  for (size_t p = 0; p < L.patches.size(); ++p) {
+    auto key = L.patches[p].edges;
+    std::rotate(key.begin(), std::min_element(key.begin(), key.end()), key.end());
+    byEdges[key] = static_cast<int>(p);
+  }
+  std::vector<Patch> ordered(src.patches.size());
+  std::vector<int> newIndex(L.patches.size(), -1);
+  for (size_t p = 0; p < src.patches.size(); ++p) {
+    const Patch& sp = src.patches[p];
+    auto key = sp.edges;
+    const int shift = static_cast<int>(std::min_element(key.begin(), key.end()) - key.begin());
+    std::rotate(key.begin(), key.begin() + shift, key.end());
+    auto it = byEdges.find(key);
+    if (it == byEdges.end()) {
+      r.status = Status::error(ErrorCode::InternalError, "source patch " + std::to_string(p) + " has no target counterpart");
+      return r;
+    }
+    Patch tp = L.patches[it->second];
+    // Start at the same corner as the source patch.
+    const int start = static_cast<int>(std::find(tp.corners.begin(), tp.corners.end(), sp.corners[0]) - tp.corners.begin());
+    std::rotate(tp.corners.begin(), tp.corners.begin() + start % 3, tp.corners.end());
+    std::rotate(tp.edges.begin(), tp.edges.begin() + start % 3, tp.edges.end());
+    std::rotate(tp.forward.begin(), tp.forward.begin() + start % 3, tp.forward.end());
+    ordered[p] = tp;
+    newIndex[it->second] = static_cast<int>(p);
+  }
+  L.patches = std::move(ordered);
+  for (int& p : L.facePatch) p = newIndex[p];
+  if (Status s = checkIsomorphic(src, L); !s) {
+    r.status = s;
+    return r;
+  }
+  r.layoutSeconds = seconds(t0);
+  return r;
+}
+
+}  // namespace cbd

@@ -1,0 +1,177 @@
+// Sec. 5.2 / Procedure 1: the source layout traced on a deformed, re-triangulated target.
+// Every result: both layouts valid, isomorphic (same edges, patches, rotation system).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <functional>
+
+#include "cbd/anchor_sampling.h"
+#include "cbd/source_layout.h"
+#include "cbd/target_layout.h"
+#include "cbd/validate_input.h"
+#include "support/fixtures.h"
+
+using namespace cbd;
+namespace fx = cbd::fixtures;
+
+namespace {
+
+int nearest(const IndexedMesh& m, const Vec3& p) {
+  int best = 0;
+  for (int v = 1; v < m.vertexCount(); ++v)
+    if ((m.positions[v] - p).squaredNorm() < (m.positions[best] - p).squaredNorm()) best = v;
+  return best;
+}
+
+struct PairRun {
+  SourceLayoutResult source;
+  TargetLayoutResult target;
+};
+
+// Source anchors `sa` on `s`; target anchors are the vertices of `tUndeformed` nearest to them
+// (the known correspondence), the target mesh is `t` (tUndeformed deformed).
+PairRun run(const IndexedMesh& s, const std::vector<int>& sa, const IndexedMesh& tUndeformed, const IndexedMesh& t) {
+  std::vector<int> ta;
+  for (int v : sa) ta.push_back(nearest(tUndeformed, s.positions[v]));
+  PairRun r;
+  r.source = buildSourceLayout(s, sa);
+  EXPECT_TRUE(r.source.status.ok()) << r.source.status.message;
+  if (!r.source.status) return r;
+  r.target = buildTargetLayout(r.source.layout, t, ta);
+  EXPECT_TRUE(r.target.status.ok()) << r.target.status.message;
+  if (!r.target.status) return r;
+  const int chi = validateMesh(s, "s").eulerCharacteristic;
+  EXPECT_TRUE(validateLayout(r.source.layout, chi).status.ok());
+  const LayoutCheck c = validateLayout(r.target.layout, chi);
+  EXPECT_TRUE(c.status.ok()) << c.status.message;
+  EXPECT_TRUE(checkIsomorphic(r.source.layout, r.target.layout).ok());
+  const MeshReport refined = validateMesh(r.target.layout.mesh.toIndexed(), "refined target");
+  EXPECT_TRUE(refined.status.ok()) << refined.status.message;
+  return r;
+}
+
+Vec3 bumpyEllipsoid(const Vec3& p) {
+  return Vec3(1.8 * p.x(), p.y(), 0.7 * p.z()) * (1.0 + 0.12 * std::sin(5 * p.x()) * std::cos(4 * p.y()));
+}
+
+}  // namespace
+
+TEST(TargetLayout, SphereToBumpyEllipsoid) {
+  const IndexedMesh s = fx::icosphere(3);
+  const IndexedMesh tu = fx::icosphere(4);
+  IndexedMesh t = tu;
+  for (auto& p : t.positions) p = bumpyEllipsoid(p);
+  for (int n : {6, 12, 40}) {
+    SCOPED_TRACE(n);
+    const PairRun r = run(s, farthestPointSampling(s, n), tu, t);
+    if (r.target.status) EXPECT_EQ(static_cast<int>(r.target.layout.patches.size()), 2 * (n - 2));
+  }
+}
+
+TEST(TargetLayout, TwistedBumpyTorusWithSixAnchors) {
+  // The paper's Fig. 1 case: six anchors on a genus-1 surface need multiple linkages.
+  const double R = 2.0, rr = 0.7;
+  const IndexedMesh s = fx::torus(R, rr, 60, 24);
+  const IndexedMesh tu = fx::torus(R, rr, 75, 28);
+  IndexedMesh t = tu;
+  for (auto& p : t.positions) {
+    const double u = std::atan2(p.y(), p.x());
+    const Vec3 c(R * std::cos(u), R * std::sin(u), 0);
+    Vec3 d = p - c;  // offset from the core circle: twist it by u/2 around the core tangent
+    const Vec3 radial = Vec3(std::cos(u), std::sin(u), 0), up(0, 0, 1);
+    const double a = d.dot(radial), b = d.dot(up), tw = 0.5 * u;
+    const double bump = 1.0 + 0.25 * std::sin(3 * u);
+    d = bump * ((a * std::cos(tw) - b * std::sin(tw)) * radial + (a * std::sin(tw) + b * std::cos(tw)) * up);
+    p = c + d;
+  }
+  std::vector<int> sa;
+  for (int k = 0; k < 6; ++k) {
+    const double u = 2 * M_PI * k / 6, v = (k % 2) ? M_PI : 0.0;
+    sa.push_back(nearest(s, Vec3((R + rr * std::cos(v)) * std::cos(u), (R + rr * std::cos(v)) * std::sin(u), rr * std::sin(v))));
+  }
+  const PairRun r = run(s, sa, tu, t);
+  EXPECT_GE(r.source.layout.multipleLinkages(), 1);
+}
+
+TEST(TargetLayout, DoubleTorusBent) {
+  const IndexedMesh s = fx::holedPlate(2, 4, 20);
+  const IndexedMesh tu = fx::holedPlate(2, 5, 20);
+  IndexedMesh t = tu;
+  for (auto& p : t.positions) {  // bend the plate around the x axis and thicken it
+    const double ang = 0.35 * p.y();
+    p = Vec3(p.x(), (2.0 + p.z()) * std::sin(ang), (2.0 + 1.5 * p.z()) * std::cos(ang));
+  }
+  run(s, farthestPointSampling(s, 20), tu, t);
+}
+
+TEST(TargetLayout, AnchorsDistributedVeryDifferently) {
+  // Fig. 13 case: the target stretches one half of the sphere five-fold, so its Voronoi
+  // diagram differs a lot from the source's.
+  const IndexedMesh s = fx::icosphere(3);
+  const IndexedMesh tu = fx::icosphere(4);
+  IndexedMesh t = tu;
+  for (auto& p : t.positions) p = Vec3(p.x() > 0 ? 5.0 * p.x() : p.x(), p.y(), p.z());
+  run(s, farthestPointSampling(s, 30), tu, t);
+}
+
+TEST(TargetLayout, IdenticalSurfaceGivesIdenticalPaths) {
+  const IndexedMesh s = fx::icosphere(3);
+  const std::vector<int> sa = farthestPointSampling(s, 16);
+  const PairRun r = run(s, sa, s, s);
+  if (!r.target.status) return;
+  // Same mesh, same anchors: the target paths are the source paths.
+  for (size_t e = 0; e < r.source.layout.edges.size(); ++e)
+    EXPECT_NEAR(r.source.layout.edges[e].length, r.target.layout.edges[e].length,
+                1e-9 + 0.25 * r.source.layout.edges[e].length)
+        << "edge " << e;
+}
+
+TEST(TargetLayout, TwistedTubeDoesNotSwirl) {
+  // The Fig. 2 case: a tube with anchors only at its two ends, the target twisted by 180
+  // degrees. Each target path, untwisted back to the source's frame, must run where the
+  // source path runs (mean angular deviation along the paths), not around the other way.
+  const double h = 4.0;
+  const IndexedMesh s = fx::cappedCylinder(1.0, h, 32, 16);
+  const IndexedMesh tu = fx::cappedCylinder(1.0, h, 40, 20);
+  IndexedMesh t = tu;
+  auto twist = [&](const Vec3& p, double sign) {
+    const double a = sign * M_PI * p.z() / h;
+    return Vec3(p.x() * std::cos(a) - p.y() * std::sin(a), p.x() * std::sin(a) + p.y() * std::cos(a), p.z());
+  };
+  for (auto& p : t.positions) p = twist(p, +1);
+  std::vector<int> sa;
+  for (const Vec3& p : {Vec3(1, 0, 0), Vec3(-1, 0, 0), Vec3(0, 1, h), Vec3(0, -1, h), Vec3(0, 0, 0), Vec3(0, 0, h)})
+    sa.push_back(nearest(s, p));
+  const PairRun r = run(s, sa, tu, t);
+  if (!r.target.status) return;
+  double sum = 0;
+  int count = 0;
+  for (size_t e = 0; e < r.source.layout.edges.size(); ++e) {
+    auto sample = [](const Layout& L, int edge, const std::function<Vec3(const Vec3&)>& f) {
+      const auto& c = L.edges[edge].vertices;
+      std::vector<double> acc{0};
+      for (size_t k = 1; k < c.size(); ++k) acc.push_back(acc.back() + (L.mesh.position(c[k]) - L.mesh.position(c[k - 1])).norm());
+      std::vector<Vec3> out;
+      for (int i = 1; i < 20; ++i) {
+        const double want = acc.back() * i / 20.0;
+        size_t k = 1;
+        while (k + 1 < acc.size() && acc[k] < want) ++k;
+        const double w = (want - acc[k - 1]) / std::max(1e-12, acc[k] - acc[k - 1]);
+        out.push_back(f((1 - w) * L.mesh.position(c[k - 1]) + w * L.mesh.position(c[k])));
+      }
+      return out;
+    };
+    const auto ps = sample(r.source.layout, static_cast<int>(e), [](const Vec3& p) { return p; });
+    const auto pt = sample(r.target.layout, static_cast<int>(e), [&](const Vec3& p) { return twist(p, -1); });
+    for (size_t i = 0; i < ps.size(); ++i) {
+      if (std::hypot(ps[i].x(), ps[i].y()) < 0.5 || std::hypot(pt[i].x(), pt[i].y()) < 0.5) continue;  // caps
+      const double d = std::remainder(std::atan2(ps[i].y(), ps[i].x()) - std::atan2(pt[i].y(), pt[i].x()), 2 * M_PI);
+      sum += std::abs(d);
+      ++count;
+    }
+  }
+  ASSERT_GT(count, 20);
+  const double meanDeviation = sum / count;
+  RecordProperty("mean_angular_deviation_rad", std::to_string(meanDeviation));
+  EXPECT_LT(meanDeviation, 0.35) << "target paths swirl around the tube";
+}
