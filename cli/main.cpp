@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cbd/anchor_sampling.h"
+#include "cbd/greedy_layout.h"
 #include "cbd/layout_io.h"
 #include "cbd/source_layout.h"
 #include "cbd/target_layout.h"
@@ -129,6 +130,7 @@ int runCheck(const PairArgs& a) {
 struct LayoutArgs {
   std::string mesh, anchors, out, jsonPath;
   std::string target, targetAnchors;
+  std::string method = "voronoi";
   int minEdgeNodes = 3;
   bool singleEdgeNode = false;
   double snapTolerance = 0.01;
@@ -190,6 +192,35 @@ int runLayout(const LayoutArgs& a) {
   cbd::SourceLayoutOptions opt;
   opt.edgeNodes.minEdgeNodes = a.singleEdgeNode ? 1 : a.minEdgeNodes;
   opt.edgeNodes.adaptive = !a.singleEdgeNode;
+  j["method"] = a.method;
+  if (a.method == "greedy") {
+    if (!pair)
+      return finish(cbd::Status::error(cbd::ErrorCode::InvalidArgument,
+                                       "--method greedy builds both layouts at once: give --target and --target-anchors"),
+                    j, a.jsonPath);
+    cbd::GreedyLayoutOptions gopt;
+    gopt.edgeNodes = opt.edgeNodes;
+    const cbd::GreedyLayoutResult g = cbd::buildGreedyLayout(source, sourceAnchors, target, targetAnchors, gopt);
+    j["timing_s"] = {{"candidates", g.candidateSeconds}, {"source_layout", g.candidateSeconds + g.layoutSeconds},
+                     {"target_layout", 0.0}};
+    j["greedy"] = {{"candidates", g.candidates}, {"tried", g.tried}, {"accepted", g.accepted},
+                   {"rejected", g.rejected}, {"completion_paths", g.completionPaths}, {"flips", g.flips}};
+    if (!g.status) return finish(g.status, j, a.jsonPath);
+    for (const cbd::Layout* L : {&g.source, &g.target})
+      if (const cbd::LayoutCheck c = cbd::validateLayout(*L, sourceReport.eulerCharacteristic); !c.status)
+        return finish(c.status, j, a.jsonPath);
+    j["layout"] = {{"edges", g.source.edges.size()}, {"patches", g.source.patches.size()},
+                   {"multi_linkages", g.source.multipleLinkages()}};
+    if (cbd::Status s = cbd::writeLayout(g.source, {}, a.out + "/source"); !s) return finish(s, j, a.jsonPath);
+    if (cbd::Status s = cbd::writeLayout(g.target, {}, a.out + "/target"); !s) return finish(s, j, a.jsonPath);
+    j["timing_s"]["total"] = elapsed(t0);
+    std::printf("greedy  %d candidate pairs, %d traced, %d accepted, %d rejected, %d completion paths, %d flips\n",
+                g.candidates, g.tried, g.accepted, g.rejected, g.completionPaths, g.flips);
+    std::printf("layout  %zu edges, %zu patches; time %.3f s (all-pairs paths %.3f s)\n", g.source.edges.size(),
+                g.source.patches.size(), g.candidateSeconds + g.layoutSeconds, g.candidateSeconds);
+    std::printf("wrote   %s/{source,target}/{layout,paths}.ply\n", a.out.c_str());
+    return finish(cbd::Status::success(), j, a.jsonPath);
+  }
   const cbd::SourceLayoutResult r = cbd::buildSourceLayout(source, sourceAnchors, opt);
   j["timing_s"] = {{"voronoi", r.voronoiSeconds}, {"source_layout", r.layoutSeconds}};
   if (!r.status) return finish(r.status, j, a.jsonPath);
@@ -297,6 +328,11 @@ int main(int argc, char** argv) {
       ->needs(tgtOpt);
   tgtOpt->needs("--target-anchors");
   cmdLayout->add_option("--out,-o", layout.out, "output folder (created when missing)")->required();
+  cmdLayout->add_option("--method", layout.method,
+                        "voronoi: the Voronoi-cue method (Kwok et al. 2012); greedy: the greedy shortest-path "
+                        "baseline (Kraevoy & Sheffer 2004), which needs --target")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"voronoi", "greedy"}));
   cmdLayout->add_option("--min-edge-nodes", layout.minEdgeNodes, "b: minimum edge nodes per edge")
       ->capture_default_str()
       ->check(CLI::Range(1, 16));

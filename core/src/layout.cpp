@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <map>
 #include <set>
+#include <tuple>
 
 namespace cbd {
 
@@ -115,6 +116,53 @@ RegionMap analyzeRegions(const RefinedMesh& m, const std::vector<int>& edgePath,
   return r;
 }
 
+bool RegionSignature::operator<(const RegionSignature& o) const {
+  return std::tie(euler, inside, loops) < std::tie(o.euler, o.inside, o.loops);
+}
+bool RegionSignature::operator==(const RegionSignature& o) const {
+  return euler == o.euler && inside == o.inside && loops == o.loops;
+}
+
+std::vector<RegionSignature> regionSignatures(const RefinedMesh& mesh, const std::vector<int>& edgePath,
+                                              const std::vector<int>& anchorOf, const std::vector<LayoutEdge>& edges) {
+  RegionMap rm = analyzeRegions(mesh, edgePath, anchorOf);
+  std::vector<RegionSignature> out;
+  for (const Region& r : rm.regions) {
+    RegionSignature s;
+    s.euler = r.eulerCharacteristic;
+    s.inside = r.interiorAnchors;
+    std::sort(s.inside.begin(), s.inside.end());
+    for (const RegionLoop& l : r.loops) {
+      std::vector<std::pair<int, int>> ls;
+      for (size_t k = 0; k < l.sides.size(); ++k) ls.emplace_back(l.sides[k], edges[l.sides[k]].a == l.corners[k] ? 1 : 0);
+      std::rotate(ls.begin(), std::min_element(ls.begin(), ls.end()), ls.end());
+      s.loops.push_back(ls);
+    }
+    std::sort(s.loops.begin(), s.loops.end());
+    out.push_back(std::move(s));
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+int leavingHalfedge(const RefinedMesh& m, const std::vector<int>& chain, int v) {
+  if (chain.front() == v) return m.findHalfedge(chain[0], chain[1]);
+  return m.findHalfedge(chain.back(), chain[chain.size() - 2]);
+}
+
+std::vector<int> rotationAt(const RefinedMesh& m, const std::vector<int>& edgePath, int v) {
+  std::vector<int> out;
+  const int start = m.outgoing(v);
+  if (start < 0) return out;
+  int h = start;
+  do {
+    const int p = edgePath[RefinedMesh::edgeOf(h)];
+    if (p >= 0) out.push_back(p);
+    h = m.rotateCCW(h);
+  } while (h != start);
+  return out;
+}
+
 Status assemblePatches(Layout& layout) {
   const RefinedMesh& m = layout.mesh;
   std::vector<int> anchorOf(m.vertexCount(), -1);
@@ -139,16 +187,7 @@ Status assemblePatches(Layout& layout) {
   }
   layout.facePatch = rm.faceRegion;
   layout.rotation.assign(layout.anchorCount(), {});
-  for (int i = 0; i < layout.anchorCount(); ++i) {
-    const int v = layout.anchorVertices[i];
-    const int start = m.outgoing(v);
-    int h = start;
-    do {
-      const int p = layout.edgePath[RefinedMesh::edgeOf(h)];
-      if (p >= 0) layout.rotation[i].push_back(p);
-      h = m.rotateCCW(h);
-    } while (h != start);
-  }
+  for (int i = 0; i < layout.anchorCount(); ++i) layout.rotation[i] = rotationAt(m, layout.edgePath, layout.anchorVertices[i]);
   return Status::success();
 }
 

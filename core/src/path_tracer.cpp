@@ -190,12 +190,17 @@ TracedPath PathTracer::trace(const PathQuery& q) {
   stampV_[q.source] = st, distV_[q.source] = 0.0, parentV_[q.source] = kNone;
   pq.push({0.0, q.source});
   int reached = -1;
+  size_t settledGoals = 0;
+  std::vector<char> goalSettled(q.goals.size(), 0);
   while (!pq.empty()) {
     const auto [d, u] = pq.top();
     pq.pop();
     if (u >= kGoalBase) {
       reached = static_cast<int>(u - kGoalBase);
-      break;
+      if (!q.distancesOnly) break;
+      if (!goalSettled[reached]) goalSettled[reached] = 1, ++settledGoals;
+      if (settledGoals == q.goals.size()) break;
+      continue;
     }
     if (d > dist(u)) continue;
     const Vec3 pu = u == q.source ? srcPos : nodePosition(u);
@@ -253,6 +258,11 @@ TracedPath PathTracer::trace(const PathQuery& q) {
         crossEdge(RefinedMesh::edgeOf(hp), f);
       }
     }
+  }
+  if (q.distancesOnly) {
+    result.goalDistances = goalDist;
+    result.found = settledGoals > 0;
+    return result;
   }
   if (reached < 0) return result;
 
@@ -372,6 +382,21 @@ Status PathTracer::commit(const TracedPath& path, int pathId, std::vector<int>& 
     edgePath_[e] = pathId;
     edgeNodes_[e] = 0;
   }
+  for (int v : vertices) ++vertexPaths_[v];
+  return Status::success();
+}
+
+Status PathTracer::recommit(const std::vector<int>& vertices, int pathId) {
+  std::vector<int> edges;
+  for (size_t i = 0; i + 1 < vertices.size(); ++i) {
+    const int h = mesh_.findHalfedge(vertices[i], vertices[i + 1]);
+    if (h < 0 || edgePath_[RefinedMesh::edgeOf(h)] >= 0)
+      return Status::error(ErrorCode::InternalError, "a path to restore is no longer a chain of free edges");
+    edges.push_back(RefinedMesh::edgeOf(h));
+  }
+  for (size_t i = 1; i + 1 < vertices.size(); ++i)
+    if (vertexPaths_[vertices[i]] != 0) return Status::error(ErrorCode::InternalError, "a path to restore meets another path");
+  for (int e : edges) edgePath_[e] = pathId, edgeNodes_[e] = 0;
   for (int v : vertices) ++vertexPaths_[v];
   return Status::success();
 }

@@ -14,44 +14,6 @@ double seconds(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
-/// Region signatures: what must agree between the partial layouts on the two surfaces.
-using LoopSig = std::vector<std::pair<int, int>>;  // (edge, direction) around the loop
-struct RegionSig {
-  int euler = 0;
-  std::vector<int> inside;
-  std::vector<LoopSig> loops;
-  bool operator<(const RegionSig& o) const { return std::tie(euler, inside, loops) < std::tie(o.euler, o.inside, o.loops); }
-  bool operator==(const RegionSig& o) const { return euler == o.euler && inside == o.inside && loops == o.loops; }
-};
-
-std::vector<RegionSig> signatures(const RefinedMesh& mesh, const std::vector<int>& edgePath,
-                                  const std::vector<int>& anchorOf, const std::vector<LayoutEdge>& edges) {
-  RegionMap rm = analyzeRegions(mesh, edgePath, anchorOf);
-  std::vector<RegionSig> out;
-  for (const Region& r : rm.regions) {
-    RegionSig s;
-    s.euler = r.eulerCharacteristic;
-    s.inside = r.interiorAnchors;
-    std::sort(s.inside.begin(), s.inside.end());
-    for (const RegionLoop& l : r.loops) {
-      LoopSig ls;
-      for (size_t k = 0; k < l.sides.size(); ++k) ls.emplace_back(l.sides[k], edges[l.sides[k]].a == l.corners[k] ? 1 : 0);
-      std::rotate(ls.begin(), std::min_element(ls.begin(), ls.end()), ls.end());
-      s.loops.push_back(ls);
-    }
-    std::sort(s.loops.begin(), s.loops.end());
-    out.push_back(std::move(s));
-  }
-  std::sort(out.begin(), out.end());
-  return out;
-}
-
-/// Outgoing halfedge of an embedded path at its anchor end `v`.
-int leavingHalfedge(const RefinedMesh& m, const std::vector<int>& chain, int v) {
-  if (chain.front() == v) return m.findHalfedge(chain[0], chain[1]);
-  return m.findHalfedge(chain.back(), chain[chain.size() - 2]);
-}
-
 }  // namespace
 
 Status checkIsomorphic(const Layout& s, const Layout& t) {
@@ -75,6 +37,38 @@ Status checkIsomorphic(const Layout& s, const Layout& t) {
     std::rotate(rt.begin(), it, rt.end());
     if (rs != rt) return fail("rotation at anchor " + std::to_string(a));
   }
+  return Status::success();
+}
+
+Status alignPatches(const Layout& src, Layout& L) {
+  std::map<std::array<int, 3>, int> byEdges;
+  for (size_t p = 0; p < L.patches.size(); ++p) {
+    auto key = L.patches[p].edges;
+    std::rotate(key.begin(), std::min_element(key.begin(), key.end()), key.end());
+    byEdges[key] = static_cast<int>(p);
+  }
+  std::vector<Patch> ordered(src.patches.size());
+  std::vector<int> newIndex(L.patches.size(), -1);
+  for (size_t p = 0; p < src.patches.size(); ++p) {
+    const Patch& sp = src.patches[p];
+    auto key = sp.edges;
+    const int shift = static_cast<int>(std::min_element(key.begin(), key.end()) - key.begin());
+    std::rotate(key.begin(), key.begin() + shift, key.end());
+    auto it = byEdges.find(key);
+    if (it == byEdges.end()) {
+      return Status::error(ErrorCode::InternalError, "source patch " + std::to_string(p) + " has no target counterpart");
+    }
+    Patch tp = L.patches[it->second];
+    // Start at the same corner as the source patch.
+    const int start = static_cast<int>(std::find(tp.corners.begin(), tp.corners.end(), sp.corners[0]) - tp.corners.begin());
+    std::rotate(tp.corners.begin(), tp.corners.begin() + start % 3, tp.corners.end());
+    std::rotate(tp.edges.begin(), tp.edges.begin() + start % 3, tp.edges.end());
+    std::rotate(tp.forward.begin(), tp.forward.begin() + start % 3, tp.forward.end());
+    ordered[p] = tp;
+    newIndex[it->second] = static_cast<int>(p);
+  }
+  L.patches = std::move(ordered);
+  for (int& p : L.facePatch) p = newIndex[p];
   return Status::success();
 }
 
@@ -219,7 +213,7 @@ TargetLayoutResult buildTargetLayout(const Layout& src, const IndexedMesh& targe
     }
     // The partial source layout after this edge: what the target must reproduce.
     setSourceEdge(e, e);
-    const std::vector<RegionSig> want = signatures(src.mesh, srcPartial, srcAnchorOf, src.edges);
+    const std::vector<RegionSignature> want = regionSignatures(src.mesh, srcPartial, srcAnchorOf, src.edges);
     setSourceEdge(e, -1);
     for (int attempt = 0; attempt < 2; ++attempt) {
       // 0: inside the two target clusters and the region; 1: the whole region.
@@ -244,7 +238,7 @@ TargetLayoutResult buildTargetLayout(const Layout& src, const IndexedMesh& targe
         return -1;
       }
       refreshTargetAnchorOf();
-      if (signatures(L.mesh, tracer.edgePath(), tgtAnchorOf, src.edges) == want) {
+      if (regionSignatures(L.mesh, tracer.edgePath(), tgtAnchorOf, src.edges) == want) {
         L.edges[e].vertices = std::move(chain);
         L.edges[e].length = tp.length;
         (attempt == 0 ? r.embeddedInClusters : r.embeddedInRegion)++;
@@ -301,36 +295,10 @@ TargetLayoutResult buildTargetLayout(const Layout& src, const IndexedMesh& targe
     r.status = s;
     return r;
   }
-  // Order the target patches like the source's: patch k corresponds to source patch k.
-  std::map<std::array<int, 3>, int> byEdges;
-  for (size_t p = 0; p < L.patches.size(); ++p) {
-    auto key = L.patches[p].edges;
-    std::rotate(key.begin(), std::min_element(key.begin(), key.end()), key.end());
-    byEdges[key] = static_cast<int>(p);
+  if (Status s = alignPatches(src, L); !s) {
+    r.status = s;
+    return r;
   }
-  std::vector<Patch> ordered(src.patches.size());
-  std::vector<int> newIndex(L.patches.size(), -1);
-  for (size_t p = 0; p < src.patches.size(); ++p) {
-    const Patch& sp = src.patches[p];
-    auto key = sp.edges;
-    const int shift = static_cast<int>(std::min_element(key.begin(), key.end()) - key.begin());
-    std::rotate(key.begin(), key.begin() + shift, key.end());
-    auto it = byEdges.find(key);
-    if (it == byEdges.end()) {
-      r.status = Status::error(ErrorCode::InternalError, "source patch " + std::to_string(p) + " has no target counterpart");
-      return r;
-    }
-    Patch tp = L.patches[it->second];
-    // Start at the same corner as the source patch.
-    const int start = static_cast<int>(std::find(tp.corners.begin(), tp.corners.end(), sp.corners[0]) - tp.corners.begin());
-    std::rotate(tp.corners.begin(), tp.corners.begin() + start % 3, tp.corners.end());
-    std::rotate(tp.edges.begin(), tp.edges.begin() + start % 3, tp.edges.end());
-    std::rotate(tp.forward.begin(), tp.forward.begin() + start % 3, tp.forward.end());
-    ordered[p] = tp;
-    newIndex[it->second] = static_cast<int>(p);
-  }
-  L.patches = std::move(ordered);
-  for (int& p : L.facePatch) p = newIndex[p];
   if (Status s = checkIsomorphic(src, L); !s) {
     r.status = s;
     return r;

@@ -107,6 +107,27 @@ RegionMap analyzeRegions(const RefinedMesh& mesh, const std::vector<int>& edgePa
 /// between the incoming and the outgoing loop halfedge.
 std::vector<int> cornerWedge(const RefinedMesh& mesh, const std::vector<int>& edgePath, int outgoingHalfedge);
 
+/// What two partial layouts with the same edge ids must share, region by region: Euler
+/// characteristic, anchors inside, and boundary loops as cyclic sequences of (edge, direction).
+struct RegionSignature {
+  int euler = 0;
+  std::vector<int> inside;
+  std::vector<std::vector<std::pair<int, int>>> loops;
+  bool operator<(const RegionSignature& o) const;
+  bool operator==(const RegionSignature& o) const;
+};
+
+/// Sorted signatures of all regions of a (partial) layout; `edges[p].a` gives directions.
+std::vector<RegionSignature> regionSignatures(const RefinedMesh& mesh, const std::vector<int>& edgePath,
+                                              const std::vector<int>& anchorOfVertex,
+                                              const std::vector<LayoutEdge>& edges);
+
+/// The halfedge by which a path (vertex chain) leaves its end vertex v.
+int leavingHalfedge(const RefinedMesh& mesh, const std::vector<int>& chain, int v);
+
+/// Layout edges leaving vertex v, counter-clockwise (path ids of the path edges around it).
+std::vector<int> rotationAt(const RefinedMesh& mesh, const std::vector<int>& edgePath, int v);
+
 /// Assemble `layout.patches`, `layout.rotation` and `layout.facePatch` from the paths cut into
 /// `layout.mesh` (`layout.edgePath` set). InternalError if a region is not a triangle.
 Status assemblePatches(Layout& layout);

@@ -50,6 +50,7 @@ struct PathQuery {
   std::vector<PathGoal> goals;     ///< the nearest reachable goal ends the search
   FaceFilter filter;
   std::vector<int> blockedEdgeLabels;  ///< edges with these labels (and their vertices) are walls
+  bool distancesOnly = false;  ///< settle every goal and report distances, trace no path
 };
 
 /// A traced path, before it is committed.
@@ -60,6 +61,7 @@ struct TracedPath {
   /// Nodes from source to goal: a vertex (>= 0) or an edge node, encoded as
   /// -(1 + slot) where slot indexes the edge-node table at the time of the search.
   std::vector<int64_t> nodes;
+  std::vector<double> goalDistances;  ///< with PathQuery::distancesOnly: per goal (inf: unreachable)
 };
 
 /// Stateful path tracer over a refined mesh: the edge-node graph is kept up to date as paths are
@@ -93,6 +95,10 @@ class PathTracer {
   /// Cut a traced path into the mesh as layout edge `pathId`. Returns the vertex chain.
   /// InternalError if the mesh does not contain the expected edges afterwards (a bug).
   Status commit(const TracedPath& path, int pathId, std::vector<int>& vertices);
+
+  /// Mark an existing vertex chain (whose edges are free) as layout edge `pathId` again, e.g.
+  /// to restore a path undone by `release`. InternalError when a step is not a free edge.
+  Status recommit(const std::vector<int>& vertices, int pathId);
 
   /// Undo a committed path (its vertices stay in the mesh; its edges become free again).
   void release(const std::vector<int>& vertices, int pathId);

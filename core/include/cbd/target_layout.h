@@ -47,6 +47,11 @@ struct TargetLayoutResult {
 TargetLayoutResult buildTargetLayout(const Layout& source, const IndexedMesh& target,
                                      const std::vector<int>& targetAnchors, const TargetLayoutOptions& options = {});
 
+/// Reorder the patches of `target` (same edge ids as `source`) so that patch k has the corners
+/// and sides of source patch k, starting at the same corner; `facePatch` follows.
+/// InternalError when a source patch has no counterpart.
+Status alignPatches(const Layout& source, Layout& target);
+
 /// Check that two layouts are isomorphic with the identity correspondence: same anchors count,
 /// same edges (same anchor pairs), same patches in the same order (same corners, same sides
 /// with the same directions), same rotation system up to a cyclic shift. InternalError naming

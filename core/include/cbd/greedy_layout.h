@@ -1,0 +1,52 @@
+#pragma once
+/// @file greedy_layout.h
+/// The baseline of Kwok et al. 2012: common base domains by the greedy shortest-path method of
+/// Kraevoy & Sheffer 2004 ("Cross-parameterization and compatible remeshing of 3D models"),
+/// as the paper describes it (Sec. 1.1, 2, 6), on the same edge-node graph and data structures
+/// as the Voronoi method:
+///  1. the shortest path between every pair of anchors on both meshes, over the whole surfaces
+///     (one single-source search per anchor and mesh), queued by the sum of the two lengths;
+///  2. candidates taken in that order and traced anew over the current partial layouts; one is
+///     accepted only if it is valid on both meshes: no crossing (face regions), the same cyclic
+///     order at both anchors on both meshes, and no blocking (the regions of both partial
+///     layouts keep the same boundaries and the same anchors inside) — trial and error;
+///  3. when the queue is exhausted, regions that are not triangles are completed by extra paths
+///     inside corresponding regions ("face paths"); a pair of anchors is never linked twice,
+///     which is why the method fails where multiple linkages are needed (the paper's Fig. 1);
+///  4. post-processing granted for fairness: path flipping (an edge is replaced by the other
+///     diagonal of its two patches when that is shorter on both meshes together).
+
+#include <vector>
+
+#include "cbd/layout.h"
+#include "cbd/path_tracer.h"
+
+namespace cbd {
+
+/// Options of `buildGreedyLayout`.
+struct GreedyLayoutOptions {
+  EdgeNodeOptions edgeNodes;  ///< same graph as the Voronoi method
+  bool flipPaths = true;      ///< post-processing: path flipping
+};
+
+/// Result of `buildGreedyLayout`: two isomorphic layouts (patch k corresponds to patch k).
+struct GreedyLayoutResult {
+  Status status;            ///< LayoutFailed names the region that could not be completed
+  Layout source, target;
+  int candidates = 0;       ///< anchor pairs queued
+  int tried = 0;            ///< candidates traced
+  int accepted = 0;         ///< candidates that became layout edges
+  int rejected = 0;         ///< candidates traced and undone (order, blocking, unreachable)
+  int completionPaths = 0;  ///< extra paths added to complete non-triangular regions
+  int flips = 0;            ///< edges replaced by path flipping
+  double candidateSeconds = 0.0;  ///< all-pairs shortest paths on both meshes
+  double layoutSeconds = 0.0;     ///< trial and error, completion and flipping
+};
+
+/// Build common base domains on a source/target pair with corresponding anchor vertices
+/// (validated surfaces of the same genus). Errors: InvalidArgument, LayoutFailed.
+GreedyLayoutResult buildGreedyLayout(const IndexedMesh& source, const std::vector<int>& sourceAnchors,
+                                     const IndexedMesh& target, const std::vector<int>& targetAnchors,
+                                     const GreedyLayoutOptions& options = {});
+
+}  // namespace cbd

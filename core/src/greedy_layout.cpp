@@ -1,0 +1,400 @@
+#include "cbd/greedy_layout.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <tuple>
+
+#include "cbd/target_layout.h"
+#include "cbd/voronoi.h"
+
+namespace cbd {
+namespace {
+
+double seconds(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+double area(const IndexedMesh& m) {
+  double a = 0;
+  for (const auto& f : m.faces)
+    a += 0.5 * (m.positions[f[1]] - m.positions[f[0]]).cross(m.positions[f[2]] - m.positions[f[0]]).norm();
+  return a;
+}
+
+bool cyclicEqual(std::vector<int> a, const std::vector<int>& b) {
+  if (a.size() != b.size()) return false;
+  if (a.empty()) return true;
+  for (size_t s = 0; s < a.size(); ++s) {
+    if (a == b) return true;
+    std::rotate(a.begin(), a.begin() + 1, a.end());
+  }
+  return false;
+}
+
+/// One surface of the pair: its refined mesh (inside the result layout) and tracer.
+struct Side {
+  Layout& layout;
+  PathTracer tracer;
+  std::vector<int> anchorOf;
+  Side(Layout& l, const EdgeNodeOptions& o) : layout(l), tracer(l.mesh, o) {
+    for (int v : l.anchorVertices) tracer.setAnchor(v, true);
+  }
+  const std::vector<int>& anchorMap() {
+    anchorOf.assign(layout.mesh.vertexCount(), -1);
+    for (int i = 0; i < layout.anchorCount(); ++i) anchorOf[layout.anchorVertices[i]] = i;
+    return anchorOf;
+  }
+  int vertex(int anchor) const { return layout.anchorVertices[anchor]; }
+};
+
+/// A way into a region at an anchor: the anchor and the faces of its wedge (all faces around
+/// an interior anchor). `key` identifies the corner on both surfaces: its outgoing side.
+struct RegionEnd {
+  int anchor;
+  std::vector<int> faces;
+  int loop, pos;
+  std::pair<int, int> key;
+};
+
+std::vector<RegionEnd> regionEnds(const RefinedMesh& m, const std::vector<int>& edgePath, const Region& reg,
+                                  const std::vector<LayoutEdge>& edges) {
+  std::vector<RegionEnd> out;
+  for (int a : reg.interiorAnchors) out.push_back({a, {}, -1, -1, {-1, a}});
+  for (size_t l = 0; l < reg.loops.size(); ++l)
+    for (size_t k = 0; k < reg.loops[l].corners.size(); ++k) {
+      const int side = reg.loops[l].sides[k];
+      const int dir = edges[side].a == reg.loops[l].corners[k] ? 1 : 0;
+      out.push_back({reg.loops[l].corners[k], cornerWedge(m, edgePath, reg.loops[l].cornerHalfedge[k]),
+                     static_cast<int>(l), static_cast<int>(k), {side, dir}});
+    }
+  return out;
+}
+
+}  // namespace
+
+GreedyLayoutResult buildGreedyLayout(const IndexedMesh& S, const std::vector<int>& sa, const IndexedMesh& T,
+                                     const std::vector<int>& ta, const GreedyLayoutOptions& options) {
+  GreedyLayoutResult r;
+  const int na = static_cast<int>(sa.size());
+  if (na < 3 || ta.size() != sa.size()) {
+    r.status = Status::error(ErrorCode::InvalidArgument, "the greedy layout needs the same number (>= 3) of anchors on both meshes");
+    return r;
+  }
+  for (int i = 0; i < na; ++i)
+    if (sa[i] < 0 || sa[i] >= S.vertexCount() || ta[i] < 0 || ta[i] >= T.vertexCount()) {
+      r.status = Status::error(ErrorCode::InvalidArgument, "anchor " + std::to_string(i) + " is not a vertex");
+      return r;
+    }
+  auto t0 = std::chrono::steady_clock::now();
+  r.source.mesh = RefinedMesh(S);
+  r.target.mesh = RefinedMesh(T);
+  r.source.anchorVertices = sa;
+  r.target.anchorVertices = ta;
+  separateAnchors(r.source.mesh, sa);
+  separateAnchors(r.target.mesh, ta);
+  Side ss(r.source, options.edgeNodes), st(r.target, options.edgeNodes);
+  Side* sides[2] = {&ss, &st};
+
+  // Euler characteristic of the surface and the edge count of a complete layout.
+  int referenced = 0;
+  {
+    std::vector<char> used(S.vertexCount(), 0);
+    for (const auto& f : S.faces)
+      for (int v : f) used[v] = 1;
+    for (char u : used) referenced += u;
+  }
+  const int chi = referenced - 3 * S.faceCount() / 2 + S.faceCount();
+  const int targetEdges = 3 * (na - chi);  // E = 3(n - 2 + 2g)
+
+  // 1. All-pairs shortest paths on both meshes, over the whole surfaces.
+  const double scale[2] = {std::sqrt(area(S)), std::sqrt(area(T))};
+  std::vector<std::vector<double>> dist[2];
+  for (int s = 0; s < 2; ++s) {
+    dist[s].assign(na, std::vector<double>(na, std::numeric_limits<double>::infinity()));
+    for (int i = 0; i + 1 < na; ++i) {
+      PathQuery q;
+      q.source = sides[s]->vertex(i);
+      q.distancesOnly = true;
+      for (int j = i + 1; j < na; ++j) q.goals.push_back({sides[s]->vertex(j), {}, j});
+      const TracedPath tp = sides[s]->tracer.trace(q);
+      for (size_t g = 0; g < q.goals.size(); ++g) dist[s][i][q.goals[g].tag] = tp.goalDistances[g];
+    }
+  }
+  struct Candidate {
+    double key;
+    int i, j;
+    bool operator<(const Candidate& o) const { return std::tie(key, i, j) < std::tie(o.key, o.i, o.j); }
+  };
+  std::vector<Candidate> queue;
+  for (int i = 0; i < na; ++i)
+    for (int j = i + 1; j < na; ++j)
+      if (std::isfinite(dist[0][i][j]) && std::isfinite(dist[1][i][j]))
+        queue.push_back({dist[0][i][j] / scale[0] + dist[1][i][j] / scale[1], i, j});
+  std::sort(queue.begin(), queue.end());
+  r.candidates = static_cast<int>(queue.size());
+  r.candidateSeconds = seconds(t0);
+  t0 = std::chrono::steady_clock::now();
+
+  std::vector<LayoutEdge> edges;  // shared ids; vertices are the source chains
+  std::vector<std::vector<int>> chains[2];
+  std::vector<std::vector<char>> linked(na, std::vector<char>(na, 0));
+
+  // Both partial layouts agree: same rotation at the given anchors, same region signatures.
+  auto consistent = [&](std::initializer_list<int> at) {
+    for (int a : at)
+      if (!cyclicEqual(rotationAt(ss.layout.mesh, ss.tracer.edgePath(), ss.vertex(a)),
+                       rotationAt(st.layout.mesh, st.tracer.edgePath(), st.vertex(a))))
+        return false;
+    return regionSignatures(ss.layout.mesh, ss.tracer.edgePath(), ss.anchorMap(), edges) ==
+           regionSignatures(st.layout.mesh, st.tracer.edgePath(), st.anchorMap(), edges);
+  };
+  // Trace on both surfaces and keep the pair of paths if consistent; else undo.
+  auto tryLink = [&](int id, PathQuery qs, PathQuery qt, int a, int b) -> int {
+    const TracedPath ps = ss.tracer.trace(qs);
+    if (!ps.found) return 0;
+    const TracedPath pt = st.tracer.trace(qt);
+    if (!pt.found) return 0;
+    std::vector<int> cs, ct;
+    if (Status s = ss.tracer.commit(ps, id, cs); !s) return r.status = s, -1;
+    if (Status s = st.tracer.commit(pt, id, ct); !s) return r.status = s, -1;
+    edges[id].a = a, edges[id].b = b;
+    if (consistent({a, b})) {
+      chains[0][id] = std::move(cs);
+      chains[1][id] = std::move(ct);
+      edges[id].length = ps.length;
+      linked[a][b] = linked[b][a] = 1;
+      return 1;
+    }
+    ss.tracer.release(cs, id);
+    st.tracer.release(ct, id);
+    return 0;
+  };
+  auto newEdge = [&](EdgeKind kind) {
+    LayoutEdge e;
+    e.kind = kind;
+    edges.push_back(e);
+    chains[0].emplace_back();
+    chains[1].emplace_back();
+    return static_cast<int>(edges.size()) - 1;
+  };
+  auto dropLast = [&] {
+    edges.pop_back();
+    chains[0].pop_back();
+    chains[1].pop_back();
+  };
+  auto allTriangles = [&] {
+    const RegionMap rm = analyzeRegions(ss.layout.mesh, ss.tracer.edgePath(), ss.anchorMap());
+    for (const Region& reg : rm.regions)
+      if (!reg.isTriangle()) return false;
+    return true;
+  };
+
+  // 2. Trial and error in order of length.
+  for (const Candidate& c : queue) {
+    if (static_cast<int>(edges.size()) >= targetEdges) break;
+    if (linked[c.i][c.j]) continue;
+    ++r.tried;
+    const int id = newEdge(EdgeKind::Greedy);
+    PathQuery qs, qt;
+    qs.source = ss.vertex(c.i), qs.goals.push_back({ss.vertex(c.j), {}, 0});
+    qt.source = st.vertex(c.i), qt.goals.push_back({st.vertex(c.j), {}, 0});
+    const int res = tryLink(id, qs, qt, c.i, c.j);
+    if (res < 0) return r;
+    if (res == 0) {
+      dropLast();
+      ++r.rejected;
+      continue;
+    }
+    ++r.accepted;
+  }
+
+  // 3. Complete the regions that are not triangles with paths inside corresponding regions.
+  for (int guard = 0; !allTriangles(); ++guard) {
+    const RegionMap ms = analyzeRegions(ss.layout.mesh, ss.tracer.edgePath(), ss.anchorMap());
+    const RegionMap mt = analyzeRegions(st.layout.mesh, st.tracer.edgePath(), st.anchorMap());
+    int bad = -1;
+    for (size_t k = 0; k < ms.regions.size() && bad < 0; ++k)
+      if (!ms.regions[k].isTriangle()) bad = static_cast<int>(k);
+    const Region& rs = ms.regions[bad];
+    // The corresponding target region: the one with the same corners (anchor + outgoing side).
+    const std::vector<RegionEnd> es = regionEnds(ss.layout.mesh, ss.tracer.edgePath(), rs, edges);
+    int badT = -1;
+    for (size_t k = 0; k < mt.regions.size() && badT < 0; ++k) {
+      const std::vector<RegionEnd> et = regionEnds(st.layout.mesh, st.tracer.edgePath(), mt.regions[k], edges);
+      if (et.size() != es.size() || mt.regions[k].eulerCharacteristic != rs.eulerCharacteristic) continue;
+      bool same = true;
+      for (const RegionEnd& e : es) {
+        bool found = false;
+        for (const RegionEnd& f : et) found = found || (f.key == e.key && f.anchor == e.anchor);
+        same = same && found;
+      }
+      if (same) badT = static_cast<int>(k);
+    }
+    const std::vector<RegionEnd> et =
+        badT >= 0 ? regionEnds(st.layout.mesh, st.tracer.edgePath(), mt.regions[badT], edges) : std::vector<RegionEnd>{};
+    auto describe = [&] {
+      std::string s = "region of " + std::to_string(rs.faces) + " faces with corners";
+      for (const auto& l : rs.loops)
+        for (int c : l.corners) s += " " + std::to_string(c);
+      s += " and " + std::to_string(rs.interiorAnchors.size()) + " anchors inside";
+      return s;
+    };
+    if (badT < 0 || guard > 4 * na + 64) {
+      r.status = Status::error(ErrorCode::LayoutFailed,
+                               "greedy layout (Kraevoy & Sheffer): the " + describe() + " has no consistent counterpart");
+      return r;
+    }
+    // Candidate links by source length inside the region.
+    const bool disk = rs.loops.size() == 1 && rs.eulerCharacteristic == 1;
+    const std::vector<int>& labelS = ms.faceRegion;
+    const std::vector<int>& labelT = mt.faceRegion;
+    struct Link {
+      double length;
+      int s, g;
+      bool operator<(const Link& o) const { return std::tie(length, s, g) < std::tie(o.length, o.s, o.g); }
+    };
+    std::vector<Link> links;
+    for (size_t si = 0; si < es.size(); ++si) {
+      PathQuery q;
+      q.source = ss.vertex(es[si].anchor);
+      q.sourceFaces = es[si].faces;
+      q.filter = {&labelS, bad, bad};
+      q.distancesOnly = true;
+      for (size_t gi = 0; gi < es.size(); ++gi) {
+        const RegionEnd &a = es[si], &b = es[gi];
+        if (gi <= si || a.anchor == b.anchor || linked[a.anchor][b.anchor]) continue;
+        if (a.loop >= 0 && a.loop == b.loop && disk) {
+          const int m = static_cast<int>(rs.loops[a.loop].corners.size());
+          const int d = std::abs(a.pos - b.pos);
+          if (d == 1 || d == m - 1) continue;
+        }
+        q.goals.push_back({ss.vertex(b.anchor), b.faces, static_cast<int>(gi)});
+      }
+      if (q.goals.empty()) continue;
+      const TracedPath tp = ss.tracer.trace(q);
+      for (size_t g = 0; g < q.goals.size(); ++g)
+        if (std::isfinite(tp.goalDistances[g])) links.push_back({tp.goalDistances[g], static_cast<int>(si), q.goals[g].tag});
+    }
+    std::sort(links.begin(), links.end());
+    bool done = false;
+    for (const Link& l : links) {
+      const RegionEnd &a = es[l.s], &b = es[l.g];
+      auto counterpart = [&](const RegionEnd& e) -> const RegionEnd* {
+        for (const RegionEnd& f : et)
+          if (f.key == e.key && f.anchor == e.anchor) return &f;
+        return nullptr;
+      };
+      const RegionEnd *at = counterpart(a), *bt = counterpart(b);
+      if (!at || !bt) continue;
+      const int id = newEdge(EdgeKind::Triangulation);
+      PathQuery qs, qt;
+      qs.source = ss.vertex(a.anchor), qs.sourceFaces = a.faces, qs.filter = {&labelS, bad, bad};
+      qs.goals.push_back({ss.vertex(b.anchor), b.faces, 0});
+      qt.source = st.vertex(a.anchor), qt.sourceFaces = at->faces, qt.filter = {&labelT, badT, badT};
+      qt.goals.push_back({st.vertex(b.anchor), bt->faces, 0});
+      const int res = tryLink(id, qs, qt, a.anchor, b.anchor);
+      if (res < 0) return r;
+      if (res == 1) {
+        ++r.completionPaths;
+        done = true;
+        break;
+      }
+      dropLast();
+    }
+    if (!done) {
+      r.status = Status::error(ErrorCode::LayoutFailed,
+                               "greedy layout (Kraevoy & Sheffer): the " + describe() +
+                                   " cannot be triangulated without linking an anchor pair twice");
+      return r;
+    }
+  }
+
+  // 4. Path flipping: replace an edge by the other diagonal of its two patches when shorter.
+  if (options.flipPaths) {
+    for (int e = 0; e < static_cast<int>(edges.size()); ++e) {
+      const RegionMap ms = analyzeRegions(ss.layout.mesh, ss.tracer.edgePath(), ss.anchorMap());
+      const std::vector<int>& ch = chains[0][e];
+      const int h = ss.layout.mesh.findHalfedge(ch[0], ch[1]);
+      const Region& left = ms.regions[ms.faceRegion[ss.layout.mesh.face(h)]];
+      const Region& right = ms.regions[ms.faceRegion[ss.layout.mesh.face(RefinedMesh::twin(h))]];
+      auto opposite = [&](const Region& reg) {
+        for (int c : reg.loops[0].corners)
+          if (c != edges[e].a && c != edges[e].b) return c;
+        return -1;
+      };
+      const int c = opposite(left), d = opposite(right);
+      if (c < 0 || d < 0 || c == d || linked[c][d]) continue;
+      const double oldCost = edges[e].length / scale[0] + [&] {
+        double l = 0;
+        for (size_t k = 0; k + 1 < chains[1][e].size(); ++k)
+          l += (st.layout.mesh.position(chains[1][e][k + 1]) - st.layout.mesh.position(chains[1][e][k])).norm();
+        return l;
+      }() / scale[1];
+      const LayoutEdge old = edges[e];
+      const std::vector<int> oldS = chains[0][e], oldT = chains[1][e];
+      ss.tracer.release(oldS, e);
+      st.tracer.release(oldT, e);
+      linked[old.a][old.b] = linked[old.b][old.a] = 0;
+      // Trace c-d inside the merged quadrilateral on both surfaces.
+      bool ok = false;
+      std::vector<int> labels[2];
+      PathQuery q[2];
+      for (int s = 0; s < 2; ++s) {
+        Side& sd = *sides[s];
+        const RegionMap rm = analyzeRegions(sd.layout.mesh, sd.tracer.edgePath(), sd.anchorMap());
+        labels[s] = rm.faceRegion;
+        const int hv = sd.layout.mesh.findHalfedge(s == 0 ? oldS[0] : oldT[0], s == 0 ? oldS[1] : oldT[1]);
+        const int quad = rm.faceRegion[sd.layout.mesh.face(hv)];
+        const Region& reg = rm.regions[quad];
+        q[s].filter = {&labels[s], quad, quad};
+        q[s].source = sd.vertex(c);
+        q[s].goals.push_back({sd.vertex(d), {}, 0});
+        if (reg.loops.size() == 1)
+          for (size_t k = 0; k < reg.loops[0].corners.size(); ++k) {
+            const auto wedge = cornerWedge(sd.layout.mesh, sd.tracer.edgePath(), reg.loops[0].cornerHalfedge[k]);
+            if (reg.loops[0].corners[k] == c) q[s].sourceFaces = wedge;
+            if (reg.loops[0].corners[k] == d) q[s].goals[0].faces = wedge;
+          }
+      }
+      const TracedPath ps = ss.tracer.trace(q[0]), pt = st.tracer.trace(q[1]);
+      if (ps.found && pt.found && ps.length / scale[0] + pt.length / scale[1] < oldCost) {
+        const int res = tryLink(e, q[0], q[1], c, d);
+        if (res < 0) return r;
+        ok = res == 1;
+      }
+      if (ok) {
+        ++r.flips;
+        continue;
+      }
+      edges[e] = old;
+      if (Status s = ss.tracer.recommit(oldS, e); !s) return r.status = s, r;
+      if (Status s = st.tracer.recommit(oldT, e); !s) return r.status = s, r;
+      chains[0][e] = oldS, chains[1][e] = oldT;
+      linked[old.a][old.b] = linked[old.b][old.a] = 1;
+    }
+  }
+
+  // 5. Both layouts, patch k corresponding to patch k.
+  for (int s = 0; s < 2; ++s) {
+    Layout& L = sides[s]->layout;
+    L.edges = edges;
+    for (size_t e = 0; e < edges.size(); ++e) {
+      L.edges[e].vertices = chains[s][e];
+      double len = 0;
+      for (size_t k = 0; k + 1 < chains[s][e].size(); ++k)
+        len += (L.mesh.position(chains[s][e][k + 1]) - L.mesh.position(chains[s][e][k])).norm();
+      L.edges[e].length = len;
+    }
+    L.edgePath = sides[s]->tracer.edgePath();
+    if (Status st2 = assemblePatches(L); !st2) return r.status = st2, r;
+  }
+  if (Status s = alignPatches(r.source, r.target); !s) return r.status = s, r;
+  if (Status s = checkIsomorphic(r.source, r.target); !s) return r.status = s, r;
+  r.layoutSeconds = seconds(t0);
+  return r;
+}
+
+}  // namespace cbd

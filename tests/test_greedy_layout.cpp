@@ -1,0 +1,78 @@
+// The greedy shortest-path baseline (Kraevoy & Sheffer 2004): when it succeeds, both layouts
+// are valid and isomorphic, with no pair of anchors linked twice; when it fails, it says so
+// with LayoutFailed. No test requires it to fail.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <map>
+
+#include "cbd/anchor_sampling.h"
+#include "cbd/greedy_layout.h"
+#include "cbd/target_layout.h"
+#include "cbd/validate_input.h"
+#include "support/fixtures.h"
+
+using namespace cbd;
+namespace fx = cbd::fixtures;
+
+namespace {
+int nearest(const IndexedMesh& m, const Vec3& p) {
+  int best = 0;
+  for (int v = 1; v < m.vertexCount(); ++v)
+    if ((m.positions[v] - p).squaredNorm() < (m.positions[best] - p).squaredNorm()) best = v;
+  return best;
+}
+
+void expectValidOrTypedFailure(const GreedyLayoutResult& g, int chi, int anchors) {
+  if (!g.status) {
+    EXPECT_EQ(g.status.code, ErrorCode::LayoutFailed) << g.status.message;
+    EXPECT_FALSE(g.status.message.empty());
+    return;
+  }
+  EXPECT_TRUE(validateLayout(g.source, chi).status.ok()) << validateLayout(g.source, chi).status.message;
+  EXPECT_TRUE(validateLayout(g.target, chi).status.ok()) << validateLayout(g.target, chi).status.message;
+  EXPECT_TRUE(checkIsomorphic(g.source, g.target).ok());
+  EXPECT_EQ(static_cast<int>(g.source.edges.size()), 3 * (anchors - chi));
+  EXPECT_EQ(g.source.multipleLinkages(), 0);  // the method never links a pair twice
+  std::map<std::pair<int, int>, int> pairs;
+  for (const LayoutEdge& e : g.source.edges) EXPECT_EQ(++pairs[std::minmax(e.a, e.b)], 1);
+}
+}  // namespace
+
+TEST(GreedyLayout, SphereToBumpyEllipsoid) {
+  const IndexedMesh s = fx::icosphere(3);
+  const IndexedMesh tu = fx::icosphere(4);
+  IndexedMesh t = tu;
+  for (auto& p : t.positions)
+    p = Vec3(1.8 * p.x(), p.y(), 0.7 * p.z()) * (1.0 + 0.12 * std::sin(5 * p.x()) * std::cos(4 * p.y()));
+  for (int n : {6, 12, 30}) {
+    SCOPED_TRACE(n);
+    const std::vector<int> sa = farthestPointSampling(s, n);
+    std::vector<int> ta;
+    for (int v : sa) ta.push_back(nearest(tu, s.positions[v]));
+    const GreedyLayoutResult g = buildGreedyLayout(s, sa, t, ta);
+    // On a sphere with well-spread anchors the greedy method completes.
+    ASSERT_TRUE(g.status.ok()) << g.status.message;
+    expectValidOrTypedFailure(g, 2, n);
+    EXPECT_EQ(g.accepted + g.completionPaths, 3 * (n - 2));
+    EXPECT_EQ(g.tried, g.accepted + g.rejected);
+  }
+}
+
+TEST(GreedyLayout, TorusWithSixAnchorsSucceedsOrFailsCleanly) {
+  const IndexedMesh s = fx::torus(2.0, 0.7, 60, 24);
+  std::vector<int> sa;
+  for (int k = 0; k < 6; ++k) {
+    const double u = 2 * M_PI * k / 6, v = (k % 2) ? M_PI : 0.0;
+    sa.push_back(nearest(s, Vec3((2 + 0.7 * std::cos(v)) * std::cos(u), (2 + 0.7 * std::cos(v)) * std::sin(u), 0.7 * std::sin(v))));
+  }
+  const GreedyLayoutResult g = buildGreedyLayout(s, sa, s, sa);
+  RecordProperty("greedy_torus_status", errorCodeName(g.status.code));
+  expectValidOrTypedFailure(g, 0, 6);
+}
+
+TEST(GreedyLayout, RejectsMismatchedAnchorCounts) {
+  const IndexedMesh s = fx::icosphere(2);
+  EXPECT_EQ(buildGreedyLayout(s, {0, 1, 2}, s, {0, 1}).status.code, ErrorCode::InvalidArgument);
+  EXPECT_EQ(buildGreedyLayout(s, {0, 1, 2}, s, {0, 1, 99999}).status.code, ErrorCode::InvalidArgument);
+}
