@@ -12,10 +12,9 @@
 #include <nlohmann/json.hpp>
 
 #include "cbd/anchor_sampling.h"
-#include "cbd/greedy_layout.h"
 #include "cbd/layout_io.h"
-#include "cbd/source_layout.h"
-#include "cbd/target_layout.h"
+#include "cbd/map_io.h"
+#include "cbd/pipeline.h"
 #include "cbd/validate_input.h"
 
 namespace {
@@ -127,147 +126,219 @@ int runCheck(const PairArgs& a) {
   return finish(r.status, j, a.jsonPath);
 }
 
-struct LayoutArgs {
+/// Options shared by `layout` and `map`.
+struct RunArgs {
   std::string mesh, anchors, out, jsonPath;
   std::string target, targetAnchors;
   std::string method = "voronoi";
   int minEdgeNodes = 3;
   bool singleEdgeNode = false;
   double snapTolerance = 0.01;
+  int morph = 0;
 };
 
 double elapsed(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
-int runLayout(const LayoutArgs& a) {
-  json j;
-  const auto t0 = std::chrono::steady_clock::now();
-  const bool pair = !a.target.empty();
+cbd::CrossParameterizationOptions pipelineOptions(const RunArgs& a) {
+  cbd::CrossParameterizationOptions o;
+  o.method = a.method == "greedy" ? cbd::LayoutMethod::Greedy : cbd::LayoutMethod::Voronoi;
+  o.edgeNodes.minEdgeNodes = a.singleEdgeNode ? 1 : a.minEdgeNodes;
+  o.edgeNodes.adaptive = !a.singleEdgeNode;
+  return o;
+}
+
+/// Load and validate a source/target pair; fills the JSON input keys.
+cbd::Status loadPair(const RunArgs& a, cbd::LoadedInput& in, std::vector<int>& sa, std::vector<int>& ta, json& j) {
   cbd::ValidationOptions vopt;
   vopt.snapTolerance = a.snapTolerance;
-  cbd::IndexedMesh source, target;
-  std::vector<int> sourceAnchors, targetAnchors;
-  cbd::MeshReport sourceReport;
-  if (pair) {
-    cbd::LoadedInput in;
-    cbd::loadAndValidate({a.mesh, a.target, a.anchors, a.targetAnchors}, vopt, in);
-    j["source"] = meshJson(in.report.source);
-    j["target"] = meshJson(in.report.target);
-    if (!in.report.status) return finish(in.report.status, j, a.jsonPath);
-    j["source"]["anchors"] = j["target"]["anchors"] = in.report.anchors.size();
-    sourceReport = in.report.source;
-    source = std::move(in.source);
-    target = std::move(in.target);
-    for (const auto& s : in.report.anchors.source) sourceAnchors.push_back(s.vertex);
-    for (const auto& s : in.report.anchors.target) targetAnchors.push_back(s.vertex);
-  } else {
-    cbd::Mesh mesh;
-    cbd::LoadResult lr = cbd::loadMesh(a.mesh, mesh);
-    if (!lr.status) return finish(lr.status, j, a.jsonPath);
-    source = cbd::toIndexed(mesh);
-    sourceReport = cbd::validateMesh(source, "source", lr.hadPolygons, vopt);
-    j["source"] = meshJson(sourceReport);
-    if (!sourceReport.status) {
-      sourceReport.status.message =
-          "source mesh '" + a.mesh + "'" + sourceReport.status.message.substr(std::string("source mesh").size());
-      return finish(sourceReport.status, j, a.jsonPath);
-    }
-    const cbd::AnchorSet set = cbd::readAnchors(a.anchors);
-    if (!set.status) return finish(set.status, j, a.jsonPath);
-    std::vector<cbd::SnappedAnchor> snapped;
-    if (cbd::Status s = cbd::snapAnchors(source, set, a.snapTolerance, "source", snapped); !s)
-      return finish(s, j, a.jsonPath);
-    j["source"]["anchors"] = snapped.size();
-    if (snapped.size() < 3) {
-      return finish(cbd::Status::error(cbd::ErrorCode::TooFewAnchors,
-                                       a.anchors + ": " + std::to_string(snapped.size()) +
-                                           " anchors; a layout needs at least 3"),
-                    j, a.jsonPath);
-    }
-    for (const auto& s : snapped) sourceAnchors.push_back(s.vertex);
-  }
-  for (const auto& w : sourceReport.warnings) std::fprintf(stderr, "cbd: warning: %s\n", w.c_str());
+  cbd::loadAndValidate({a.mesh, a.target, a.anchors, a.targetAnchors}, vopt, in);
+  j["source"] = meshJson(in.report.source);
+  j["target"] = meshJson(in.report.target);
+  if (!in.report.status) return in.report.status;
+  j["source"]["anchors"] = j["target"]["anchors"] = in.report.anchors.size();
+  for (const auto& s : in.report.anchors.source) sa.push_back(s.vertex);
+  for (const auto& s : in.report.anchors.target) ta.push_back(s.vertex);
+  for (const auto* m : {&in.report.source, &in.report.target})
+    for (const auto& w : m->warnings) std::fprintf(stderr, "cbd: warning: %s\n", w.c_str());
+  return cbd::Status::success();
+}
 
-  cbd::SourceLayoutOptions opt;
-  opt.edgeNodes.minEdgeNodes = a.singleEdgeNode ? 1 : a.minEdgeNodes;
-  opt.edgeNodes.adaptive = !a.singleEdgeNode;
-  j["method"] = a.method;
-  if (a.method == "greedy") {
-    if (!pair)
-      return finish(cbd::Status::error(cbd::ErrorCode::InvalidArgument,
-                                       "--method greedy builds both layouts at once: give --target and --target-anchors"),
-                    j, a.jsonPath);
-    cbd::GreedyLayoutOptions gopt;
-    gopt.edgeNodes = opt.edgeNodes;
-    const cbd::GreedyLayoutResult g = cbd::buildGreedyLayout(source, sourceAnchors, target, targetAnchors, gopt);
-    j["timing_s"] = {{"candidates", g.candidateSeconds}, {"source_layout", g.candidateSeconds + g.layoutSeconds},
-                     {"target_layout", 0.0}};
-    j["greedy"] = {{"candidates", g.candidates}, {"tried", g.tried}, {"accepted", g.accepted},
-                   {"rejected", g.rejected}, {"completion_paths", g.completionPaths}, {"flips", g.flips}};
-    if (!g.status) return finish(g.status, j, a.jsonPath);
-    for (const cbd::Layout* L : {&g.source, &g.target})
-      if (const cbd::LayoutCheck c = cbd::validateLayout(*L, sourceReport.eulerCharacteristic); !c.status)
-        return finish(c.status, j, a.jsonPath);
-    j["layout"] = {{"edges", g.source.edges.size()}, {"patches", g.source.patches.size()},
-                   {"multi_linkages", g.source.multipleLinkages()}};
-    if (cbd::Status s = cbd::writeLayout(g.source, {}, a.out + "/source"); !s) return finish(s, j, a.jsonPath);
-    if (cbd::Status s = cbd::writeLayout(g.target, {}, a.out + "/target"); !s) return finish(s, j, a.jsonPath);
-    j["timing_s"]["total"] = elapsed(t0);
-    std::printf("greedy  %d candidate pairs, %d traced, %d accepted, %d rejected, %d completion paths, %d flips\n",
-                g.candidates, g.tried, g.accepted, g.rejected, g.completionPaths, g.flips);
-    std::printf("layout  %zu edges, %zu patches; time %.3f s (all-pairs paths %.3f s)\n", g.source.edges.size(),
-                g.source.patches.size(), g.candidateSeconds + g.layoutSeconds, g.candidateSeconds);
-    std::printf("wrote   %s/{source,target}/{layout,paths}.ply\n", a.out.c_str());
-    return finish(cbd::Status::success(), j, a.jsonPath);
+json layoutJson(const cbd::LayoutPair& p) {
+  json l = {{"edges", p.source.edges.size()},
+            {"patches", p.source.patches.size()},
+            {"multi_linkages", p.source.multipleLinkages()}};
+  if (p.method == cbd::LayoutMethod::Voronoi) {
+    l["cut_paths"] = p.sourceStats.cutPaths;
+    l["triangulation_paths"] = p.sourceStats.triangulationPaths;
+    l["removed_paths"] = p.sourceStats.removedPaths;
+    l["target"] = {{"in_clusters", p.targetStats.embeddedInClusters},
+                   {"in_region", p.targetStats.embeddedInRegion},
+                   {"postponements", p.targetStats.postponements},
+                   {"rejected_paths", p.targetStats.rejectedPaths}};
+  } else {
+    const auto& g = p.greedyStats;
+    l["greedy"] = {{"candidates", g.candidates}, {"tried", g.tried},         {"accepted", g.accepted},
+                   {"rejected", g.rejected},     {"completion_paths", g.completionPaths}, {"flips", g.flips}};
   }
-  const cbd::SourceLayoutResult r = cbd::buildSourceLayout(source, sourceAnchors, opt);
+  return l;
+}
+
+json timesJson(const cbd::StageTimes& t) {
+  return {{"voronoi", t.voronoi},         {"source_layout", t.sourceLayout},
+          {"target_layout", t.targetLayout}, {"parameterization", t.parameterization},
+          {"distortion", t.distortion},   {"total", t.total}};
+}
+
+void printLayout(const cbd::LayoutPair& p) {
+  if (p.method == cbd::LayoutMethod::Voronoi) {
+    std::printf("layout  voronoi: %zu edges (%d across Voronoi cuts, %d triangulating), %zu patches, %d multiple linkages\n",
+                p.source.edges.size(), p.sourceStats.cutPaths - p.sourceStats.removedPaths,
+                p.sourceStats.triangulationPaths, p.source.patches.size(), p.source.multipleLinkages());
+    std::printf("        target: %d paths inside the two clusters, %d in the whole region\n",
+                p.targetStats.embeddedInClusters, p.targetStats.embeddedInRegion);
+  } else {
+    const auto& g = p.greedyStats;
+    std::printf("layout  greedy: %zu edges, %zu patches; %d candidate pairs, %d traced, %d accepted, %d rejected, "
+                "%d completion paths, %d flips\n",
+                p.source.edges.size(), p.source.patches.size(), g.candidates, g.tried, g.accepted, g.rejected,
+                g.completionPaths, g.flips);
+  }
+}
+
+int runSingleLayout(const RunArgs& a) {
+  json j;
+  const auto t0 = std::chrono::steady_clock::now();
+  cbd::Mesh mesh;
+  cbd::LoadResult lr = cbd::loadMesh(a.mesh, mesh);
+  if (!lr.status) return finish(lr.status, j, a.jsonPath);
+  const cbd::IndexedMesh source = cbd::toIndexed(mesh);
+  cbd::MeshReport rep = cbd::validateMesh(source, "source", lr.hadPolygons);
+  j["source"] = meshJson(rep);
+  if (!rep.status) {
+    rep.status.message = "source mesh '" + a.mesh + "'" + rep.status.message.substr(std::string("source mesh").size());
+    return finish(rep.status, j, a.jsonPath);
+  }
+  for (const auto& w : rep.warnings) std::fprintf(stderr, "cbd: warning: %s\n", w.c_str());
+  const cbd::AnchorSet set = cbd::readAnchors(a.anchors);
+  if (!set.status) return finish(set.status, j, a.jsonPath);
+  std::vector<cbd::SnappedAnchor> snapped;
+  if (cbd::Status s = cbd::snapAnchors(source, set, a.snapTolerance, "source", snapped); !s) return finish(s, j, a.jsonPath);
+  j["source"]["anchors"] = snapped.size();
+  if (snapped.size() < 3)
+    return finish(cbd::Status::error(cbd::ErrorCode::TooFewAnchors,
+                                     a.anchors + ": " + std::to_string(snapped.size()) + " anchors; a layout needs at least 3"),
+                  j, a.jsonPath);
+  std::vector<int> anchors;
+  for (const auto& s : snapped) anchors.push_back(s.vertex);
+  cbd::SourceLayoutOptions opt;
+  opt.edgeNodes = pipelineOptions(a).edgeNodes;
+  const cbd::SourceLayoutResult r = cbd::buildSourceLayout(source, anchors, opt);
   j["timing_s"] = {{"voronoi", r.voronoiSeconds}, {"source_layout", r.layoutSeconds}};
   if (!r.status) return finish(r.status, j, a.jsonPath);
-  if (const cbd::LayoutCheck c = cbd::validateLayout(r.layout, sourceReport.eulerCharacteristic); !c.status)
+  if (const cbd::LayoutCheck c = cbd::validateLayout(r.layout, rep.eulerCharacteristic); !c.status)
     return finish(c.status, j, a.jsonPath);
-  j["layout"] = {{"edges", r.layout.edges.size()},
-                 {"patches", r.layout.patches.size()},
-                 {"multi_linkages", r.layout.multipleLinkages()},
-                 {"cut_paths", r.cutPaths},
-                 {"cut_paths_failed", r.cutPathsFailed},
-                 {"triangulation_paths", r.triangulationPaths},
-                 {"removed_paths", r.removedPaths}};
-  cbd::TargetLayoutResult tr;
-  if (pair) {
-    cbd::TargetLayoutOptions topt;
-    topt.edgeNodes = opt.edgeNodes;
-    tr = cbd::buildTargetLayout(r.layout, target, targetAnchors, topt);
-    j["timing_s"]["target_voronoi"] = tr.voronoiSeconds;
-    j["timing_s"]["target_layout"] = tr.layoutSeconds;
-    if (!tr.status) return finish(tr.status, j, a.jsonPath);
-    if (const cbd::LayoutCheck c = cbd::validateLayout(tr.layout, sourceReport.eulerCharacteristic); !c.status)
-      return finish(c.status, j, a.jsonPath);
-    j["layout"]["target"] = {{"in_clusters", tr.embeddedInClusters},
-                             {"in_region", tr.embeddedInRegion},
-                             {"postponements", tr.postponements},
-                             {"rejected_paths", tr.rejectedPaths}};
-  }
-  const std::string srcDir = pair ? a.out + "/source" : a.out;
-  if (cbd::Status s = cbd::writeLayout(r.layout, r.faceCluster, srcDir); !s) return finish(s, j, a.jsonPath);
-  if (pair)
-    if (cbd::Status s = cbd::writeLayout(tr.layout, tr.faceCluster, a.out + "/target"); !s) return finish(s, j, a.jsonPath);
+  if (cbd::Status s = cbd::writeLayout(r.layout, a.out); !s) return finish(s, j, a.jsonPath);
+  j["layout"] = {{"edges", r.layout.edges.size()},       {"patches", r.layout.patches.size()},
+                 {"multi_linkages", r.layout.multipleLinkages()}, {"cut_paths", r.cutPaths},
+                 {"triangulation_paths", r.triangulationPaths},   {"removed_paths", r.removedPaths}};
   j["timing_s"]["total"] = elapsed(t0);
-  std::printf("source  %s: %d vertices, %d faces, genus %d, %zu anchors\n", a.mesh.c_str(), sourceReport.vertices,
-              sourceReport.faces, sourceReport.genus, sourceAnchors.size());
+  std::printf("source  %s: %d vertices, %d faces, genus %d, %zu anchors\n", a.mesh.c_str(), rep.vertices, rep.faces,
+              rep.genus, anchors.size());
   std::printf("layout  %zu edges (%d across Voronoi cuts, %d triangulating), %zu patches, %d multiple linkages\n",
               r.layout.edges.size(), r.cutPaths - r.removedPaths, r.triangulationPaths, r.layout.patches.size(),
               r.layout.multipleLinkages());
-  std::printf("time    voronoi %.3f s, source layout %.3f s", r.voronoiSeconds, r.layoutSeconds);
-  if (pair) std::printf(", target layout %.3f s", tr.voronoiSeconds + tr.layoutSeconds);
-  std::printf("\n");
-  if (pair) {
-    std::printf("target  %s: same layout traced (%d paths inside the two clusters, %d in the whole region)\n",
-                a.target.c_str(), tr.embeddedInClusters, tr.embeddedInRegion);
-    std::printf("wrote   %s/{source,target}/{layout,paths,clusters}.ply\n", a.out.c_str());
-  } else {
-    std::printf("wrote   %s/{layout,paths,clusters}.ply\n", a.out.c_str());
+  std::printf("time    voronoi %.3f s, layout %.3f s\n", r.voronoiSeconds, r.layoutSeconds);
+  std::printf("wrote   %s/{layout,paths,clusters}.ply\n", a.out.c_str());
+  return finish(cbd::Status::success(), j, a.jsonPath);
+}
+
+int runLayout(const RunArgs& a) {
+  if (a.target.empty()) {
+    if (a.method == "greedy") {
+      json j;
+      return finish(cbd::Status::error(cbd::ErrorCode::InvalidArgument,
+                                       "--method greedy builds both layouts at once: give --target and --target-anchors"),
+                    j, a.jsonPath);
+    }
+    return runSingleLayout(a);
   }
+  json j;
+  j["method"] = a.method;
+  const auto t0 = std::chrono::steady_clock::now();
+  cbd::LoadedInput in;
+  std::vector<int> sa, ta;
+  if (cbd::Status s = loadPair(a, in, sa, ta, j); !s) return finish(s, j, a.jsonPath);
+  cbd::LayoutPair p = cbd::buildLayouts(in.source, sa, in.target, ta, in.report.source.eulerCharacteristic, pipelineOptions(a));
+  p.times.total = elapsed(t0);
+  j["timing_s"] = timesJson(p.times);
+  if (!p.status) return finish(p.status, j, a.jsonPath);
+  j["layout"] = layoutJson(p);
+  if (cbd::Status s = cbd::writeLayout(p.source, a.out + "/source"); !s) return finish(s, j, a.jsonPath);
+  if (cbd::Status s = cbd::writeLayout(p.target, a.out + "/target"); !s) return finish(s, j, a.jsonPath);
+  printLayout(p);
+  std::printf("time    voronoi %.3f s, source layout %.3f s, target layout %.3f s\n", p.times.voronoi,
+              p.times.sourceLayout, p.times.targetLayout);
+  std::printf("wrote   %s/{source,target}/{layout,paths%s}.ply\n", a.out.c_str(),
+              p.method == cbd::LayoutMethod::Voronoi ? ",clusters" : "");
+  return finish(cbd::Status::success(), j, a.jsonPath);
+}
+
+int runMap(const RunArgs& a) {
+  json j;
+  j["method"] = a.method;
+  const auto t0 = std::chrono::steady_clock::now();
+  cbd::LoadedInput in;
+  std::vector<int> sa, ta;
+  if (cbd::Status s = loadPair(a, in, sa, ta, j); !s) return finish(s, j, a.jsonPath);
+  std::error_code ec;
+  std::filesystem::create_directories(a.out, ec);
+  if (!std::filesystem::is_directory(a.out))
+    return finish(cbd::Status::error(cbd::ErrorCode::OutputError, "cannot create output folder '" + a.out + "'"), j,
+                  a.jsonPath);
+  cbd::CrossParameterizationResult r =
+      cbd::crossParameterize(in.source, sa, in.target, ta, in.report.source.eulerCharacteristic, pipelineOptions(a));
+  r.times.total = elapsed(t0);
+  j["timing_s"] = timesJson(r.times);
+  if (!r.status) return finish(r.status, j, a.jsonPath);
+  j["layout"] = layoutJson(r.layouts);
+  const auto& m = r.metrics;
+  j["metrics"] = {{"e_ang", m.eAng},     {"e_ang_deg", m.eAngDegrees}, {"e_l2", m.eL2},
+                  {"e_l2_inverse", m.eL2Inverse}, {"flipped", m.flipped}, {"degenerate", m.degenerate}};
+  // M_st with the target's attributes, M_ts with the source's.
+  const cbd::DistortionMetrics inverse =
+      cbd::computeDistortion(in.target, r.map.targetImage, in.source, r.map.targetToSource);
+  cbd::TransferOptions toSource{in.targetLoad.hasVertexColor, in.targetLoad.hasVertexQuality, in.targetLoad.hasVertexTexCoord};
+  cbd::TransferOptions toTarget{in.sourceLoad.hasVertexColor, in.sourceLoad.hasVertexQuality, in.sourceLoad.hasVertexTexCoord};
+  cbd::Mesh mst, mts;
+  cbd::buildMappedMesh(in.sourceMesh, r.map.sourceImage, r.map.sourceToTarget, in.targetMesh, toSource,
+                       m.faceStretch, mst);
+  cbd::buildMappedMesh(in.targetMesh, r.map.targetImage, r.map.targetToSource, in.sourceMesh, toTarget,
+                       inverse.faceStretch, mts);
+  cbd::SavePlyOptions po;
+  po.faceColor = po.faceQuality = true;
+  po.vertexColor = toSource.vertexColor;
+  po.vertexQuality = toSource.vertexQuality;
+  const std::string dir = a.out;
+  if (cbd::Status s = cbd::savePly(dir + "/mst.ply", mst, po); !s) return finish(s, j, a.jsonPath);
+  po.vertexColor = toTarget.vertexColor;
+  po.vertexQuality = toTarget.vertexQuality;
+  if (cbd::Status s = cbd::savePly(dir + "/mts.ply", mts, po); !s) return finish(s, j, a.jsonPath);
+  if (cbd::Status s = cbd::writeCorrespondence(dir + "/correspondence.txt", r.map.sourceToTarget, r.map.sourceImage); !s)
+    return finish(s, j, a.jsonPath);
+  if (cbd::Status s = cbd::writeLayout(r.layouts.source, dir + "/source"); !s) return finish(s, j, a.jsonPath);
+  if (cbd::Status s = cbd::writeLayout(r.layouts.target, dir + "/target"); !s) return finish(s, j, a.jsonPath);
+  if (a.morph > 0)
+    if (cbd::Status s = cbd::writeMorph(dir, in.sourceMesh, r.map.sourceImage, a.morph); !s) return finish(s, j, a.jsonPath);
+  printLayout(r.layouts);
+  std::printf("map     E_ang %.4f (%.2f deg), E_L2 %.4f (inverse %.4f), %d flipped, %d degenerate triangles\n", m.eAng,
+              m.eAngDegrees, m.eL2, m.eL2Inverse, m.flipped, m.degenerate);
+  std::printf("time    voronoi %.3f s, source layout %.3f s, target layout %.3f s, parameterization %.3f s, total %.3f s\n",
+              r.times.voronoi, r.times.sourceLayout, r.times.targetLayout, r.times.parameterization, r.times.total);
+  std::printf("wrote   %s/mst.ply (source connectivity on the target; face quality = stretch), %s/mts.ply,\n"
+              "        %s/correspondence.txt, %s/{source,target}/ layouts%s\n",
+              dir.c_str(), dir.c_str(), dir.c_str(), dir.c_str(), a.morph > 0 ? ", morph_*.ply" : "");
   return finish(cbd::Status::success(), j, a.jsonPath);
 }
 
@@ -313,35 +384,51 @@ int main(int argc, char** argv) {
       "and snap distances. Exit 0 when the pair can be processed, else a distinct code per problem.");
   addPairOptions(cmdCheck, check);
 
-  LayoutArgs layout;
+  auto addRunOptions = [](CLI::App* cmd, RunArgs& r, bool targetRequired) {
+    cmd->add_option("--source,-s", r.mesh, "source mesh (.ply, .off, .obj, .stl)")->required();
+    cmd->add_option("--source-anchors", r.anchors, "source anchors (.pp, vertex list or name x y z)")->required();
+    auto* t = cmd->add_option("--target,-t", r.target, "target mesh (.ply, .off, .obj, .stl)");
+    auto* ta = cmd->add_option("--target-anchors", r.targetAnchors, "target anchors, matched to the source's by name");
+    if (targetRequired) {
+      t->required();
+      ta->required();
+    } else {
+      ta->needs(t);
+      t->needs(ta);
+    }
+    cmd->add_option("--out,-o", r.out, "output folder (created when missing)")->required();
+    cmd->add_option("--method", r.method,
+                    "voronoi: the Voronoi-cue method (Kwok et al. 2012); greedy: the greedy shortest-path baseline "
+                    "(Kraevoy & Sheffer 2004), which needs a target")
+        ->capture_default_str()
+        ->check(CLI::IsMember({"voronoi", "greedy"}));
+    cmd->add_option("--min-edge-nodes", r.minEdgeNodes, "b: minimum edge nodes per edge (adaptive: max(b, b*l/lbar))")
+        ->capture_default_str()
+        ->check(CLI::Range(1, 16));
+    cmd->add_flag("--single-edge-node", r.singleEdgeNode, "one edge node per edge, no adaptivity (the paper's E1 setting)");
+    cmd->add_option("--snap-tolerance", r.snapTolerance, "largest anchor snap distance (fraction of bbox diagonal)")
+        ->capture_default_str()
+        ->check(CLI::Range(0.0, 1.0));
+    cmd->add_option("--json", r.jsonPath, "also write a JSON report to this file ('-' for stdout)");
+  };
+  RunArgs layout;
   CLI::App* cmdLayout = app.add_subcommand(
       "layout",
-      "Build the base domain on the source (Sec. 5.1): Voronoi clusters of the anchors, a path across "
-      "every cut, triangulation of the rest; with --target, trace the same layout on the target (Sec. 5.2). "
-      "Writes layout.ply (faces coloured by patch), paths.ply and clusters.ply per surface.");
-  cmdLayout->add_option("--source,-s", layout.mesh, "mesh (.ply, .off, .obj, .stl)")->required();
-  cmdLayout->add_option("--source-anchors", layout.anchors, "anchors (.pp, vertex list or name x y z)")->required();
-  auto* tgtOpt = cmdLayout->add_option("--target,-t", layout.target,
-                                       "target mesh: also trace the same layout on it (Procedure 1); outputs go "
-                                       "to OUT/source and OUT/target, corresponding patches in the same colour");
-  cmdLayout->add_option("--target-anchors", layout.targetAnchors, "target anchors, matched to the source's by name")
-      ->needs(tgtOpt);
-  tgtOpt->needs("--target-anchors");
-  cmdLayout->add_option("--out,-o", layout.out, "output folder (created when missing)")->required();
-  cmdLayout->add_option("--method", layout.method,
-                        "voronoi: the Voronoi-cue method (Kwok et al. 2012); greedy: the greedy shortest-path "
-                        "baseline (Kraevoy & Sheffer 2004), which needs --target")
-      ->capture_default_str()
-      ->check(CLI::IsMember({"voronoi", "greedy"}));
-  cmdLayout->add_option("--min-edge-nodes", layout.minEdgeNodes, "b: minimum edge nodes per edge")
-      ->capture_default_str()
-      ->check(CLI::Range(1, 16));
-  cmdLayout->add_flag("--single-edge-node", layout.singleEdgeNode,
-                      "one edge node per edge, no adaptivity (the paper's E1 setting)");
-  cmdLayout->add_option("--snap-tolerance", layout.snapTolerance, "largest anchor snap distance (fraction of bbox diagonal)")
-      ->capture_default_str()
-      ->check(CLI::Range(0.0, 1.0));
-  cmdLayout->add_option("--json", layout.jsonPath, "also write a JSON report to this file ('-' for stdout)");
+      "Build the base domain on the source (Sec. 5.1): Voronoi clusters of the anchors, a path across every cut, "
+      "triangulation of the rest; with --target, the same layout on the target too (Sec. 5.2), in OUT/source and "
+      "OUT/target, corresponding patches in the same colour. Writes layout.ply (faces coloured by patch), paths.ply "
+      "and clusters.ply per surface.");
+  addRunOptions(cmdLayout, layout, false);
+
+  RunArgs map;
+  CLI::App* cmdMap = app.add_subcommand(
+      "map",
+      "Cross-parameterize source and target: common base domains, patch parameterizations, the composed map. "
+      "Writes OUT/mst.ply (the source's vertices in input order at their images on the target, the source's faces; "
+      "face quality = L2 stretch), OUT/mts.ply (the inverse), OUT/correspondence.txt, both layouts, and metrics.");
+  addRunOptions(cmdMap, map, true);
+  cmdMap->add_option("--morph", map.morph, "also write K meshes OUT/morph_000.ply ... blending the source into M_st")
+      ->check(CLI::Range(2, 1000));
 
   SampleArgs sample;
   CLI::App* cmdSample = app.add_subcommand(
@@ -370,6 +457,7 @@ int main(int argc, char** argv) {
   try {
     if (*cmdCheck) return runCheck(check);
     if (*cmdLayout) return runLayout(layout);
+    if (*cmdMap) return runMap(map);
     if (*cmdSample) return runSample(sample);
     if (*cmdCodes) {
       int n = 0;

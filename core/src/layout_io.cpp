@@ -34,7 +34,7 @@ void colourFaces(Mesh& m, const std::vector<int>& label) {
 }
 }  // namespace
 
-Status writeLayout(const Layout& layout, const std::vector<int>& faceCluster, const std::string& dir) {
+Status writeLayout(const Layout& layout, const std::string& dir) {
   namespace fs = std::filesystem;
   std::error_code ec;
   fs::create_directories(dir, ec);
@@ -46,8 +46,8 @@ Status writeLayout(const Layout& layout, const std::vector<int>& faceCluster, co
   faceOpt.faceColor = faceOpt.faceQuality = true;
   colourFaces(m, layout.facePatch);
   if (Status s = savePly((fs::path(dir) / "layout.ply").string(), m, faceOpt); !s) return s;
-  if (!faceCluster.empty()) {
-    colourFaces(m, faceCluster);
+  if (!layout.faceCluster.empty()) {
+    colourFaces(m, layout.faceCluster);
     if (Status s = savePly((fs::path(dir) / "clusters.ply").string(), m, faceOpt); !s) return s;
   }
   Mesh paths;

@@ -212,7 +212,7 @@ SourceLayoutResult buildSourceLayout(const IndexedMesh& input, const std::vector
   L.edgePath = tracer.edgePath();
   for (int& p : L.edgePath)
     if (p >= 0) p = newId[p];
-  r.faceCluster = tracer.faceLabel();
+  L.faceCluster = tracer.faceLabel();
   if (Status s = assemblePatches(L); !s) {
     r.status = s;
     return r;

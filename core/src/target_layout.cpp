@@ -290,7 +290,7 @@ TargetLayoutResult buildTargetLayout(const Layout& src, const IndexedMesh& targe
   }
 
   L.edgePath = tracer.edgePath();
-  r.faceCluster = tracer.faceLabel();
+  L.faceCluster = tracer.faceLabel();
   if (Status s = assemblePatches(L); !s) {
     r.status = s;
     return r;

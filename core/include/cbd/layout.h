@@ -48,6 +48,7 @@ struct Layout {
   RefinedMesh mesh;                     ///< the input surface with every path as an edge chain
   std::vector<int> facePatch;           ///< patch of every refined-mesh face
   std::vector<int> edgePath;            ///< layout edge of every refined-mesh edge, or -1
+  std::vector<int> faceCluster;         ///< Voronoi cluster of every refined-mesh face (empty: none)
 
   int anchorCount() const { return static_cast<int>(anchorVertices.size()); }
   /// Number of anchor pairs linked by more than one edge (multiple linkages, Fig. 3).

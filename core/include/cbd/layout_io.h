@@ -16,8 +16,8 @@ std::array<unsigned char, 3> paletteColor(int k);
 
 /// Write `dir/layout.ply` (refined mesh, per-face colour by patch, face quality = patch index),
 /// `dir/paths.ply` (every layout edge as a polyline; vertex quality = layout edge index) and,
-/// when `faceCluster` is not empty, `dir/clusters.ply` (per-face colour by cluster). The folder
+/// when `layout.faceCluster` is not empty, `dir/clusters.ply` (per-face colour by cluster). The folder
 /// is created when missing. Errors: OutputError.
-Status writeLayout(const Layout& layout, const std::vector<int>& faceCluster, const std::string& dir);
+Status writeLayout(const Layout& layout, const std::string& dir);
 
 }  // namespace cbd

@@ -24,7 +24,6 @@ struct SourceLayoutOptions {
 struct SourceLayoutResult {
   Status status;                 ///< LayoutFailed names the region and the reason
   Layout layout;
-  std::vector<int> faceCluster;  ///< Voronoi cluster of every face of layout.mesh
   CutsResult cuts;               ///< on the mesh before the paths were cut in
   int cutPaths = 0;              ///< paths traced across cuts
   int cutPathsFailed = 0;        ///< cuts no path could cross (left to the triangulation)

@@ -32,7 +32,6 @@ struct TargetLayoutOptions {
 struct TargetLayoutResult {
   Status status;                  ///< LayoutFailed names the edge and the reason
   Layout layout;                  ///< isomorphic to the source: same edge ids, patch k = source patch k
-  std::vector<int> faceCluster;   ///< target Voronoi cluster of every face of layout.mesh
   CutsResult cuts;                ///< target cuts
   int embeddedInClusters = 0;     ///< paths found inside the two target clusters
   int embeddedInRegion = 0;       ///< paths that needed the whole region

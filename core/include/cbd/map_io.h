@@ -1,0 +1,38 @@
+#pragma once
+/// @file map_io.h
+/// Outputs of a cross-parameterization: M_st / M_ts as meshes (with per-face stretch and the
+/// other surface's attributes transferred through the map), the per-vertex correspondence as
+/// text, and a morph sequence.
+
+#include <string>
+#include <vector>
+
+#include "cbd/mesh.h"
+#include "cbd/parameterization.h"
+
+namespace cbd {
+
+/// Which attributes of the mesh the image lies on are transferred to the mapped mesh.
+struct TransferOptions {
+  bool vertexColor = false;
+  bool vertexQuality = false;
+  bool vertexTexCoord = false;
+};
+
+/// M_st: the connectivity of `from` with every vertex at its image, per-face quality = stretch
+/// (and a blue-white-red face colour for it, 1 = white), plus the chosen per-vertex attributes of
+/// `onto` interpolated at the images (`points`, faces of `onto`). `from` is copied, not changed.
+void buildMappedMesh(const Mesh& from, const std::vector<Vec3>& image, const std::vector<FacePoint>& points,
+                     const Mesh& onto, const TransferOptions& transfer, const std::vector<double>& faceStretch,
+                     Mesh& out);
+
+/// Write the correspondence: one line per vertex of the source, `vertex face b0 b1 b2 x y z`
+/// (face -1 for unreferenced vertices). OutputError on failure.
+Status writeCorrespondence(const std::string& path, const std::vector<FacePoint>& points,
+                           const std::vector<Vec3>& image);
+
+/// Write `count` meshes `dir/morph_000.ply` ... blending `from` (t = 0) into its image (t = 1)
+/// linearly, as in the paper's Fig. 10-11. OutputError on failure.
+Status writeMorph(const std::string& dir, const Mesh& from, const std::vector<Vec3>& image, int count);
+
+}  // namespace cbd

@@ -1,0 +1,74 @@
+#pragma once
+/// @file pipeline.h
+/// The whole method as one call, for the CLI, the plugin, the tests and the benchmark alike:
+/// validated input -> common base domains (Voronoi method, or the greedy baseline) ->
+/// patch parameterizations -> composed cross-map -> distortion. Every intermediate result is
+/// returned.
+
+#include <vector>
+
+#include "cbd/distortion.h"
+#include "cbd/greedy_layout.h"
+#include "cbd/parameterization.h"
+#include "cbd/source_layout.h"
+#include "cbd/target_layout.h"
+
+namespace cbd {
+
+/// How the common base domains are built.
+enum class LayoutMethod {
+  Voronoi,  ///< Kwok, Zhang & Wang 2012 (this project's method)
+  Greedy    ///< Kraevoy & Sheffer 2004, the paper's baseline
+};
+
+const char* layoutMethodName(LayoutMethod m);
+
+/// Options of `buildLayouts` / `crossParameterize`.
+struct CrossParameterizationOptions {
+  LayoutMethod method = LayoutMethod::Voronoi;
+  EdgeNodeOptions edgeNodes;            ///< b = 3 adaptive; {1, false} is the paper's E1
+  ParameterizationOptions parameterization;
+};
+
+/// Seconds spent in each stage.
+struct StageTimes {
+  double voronoi = 0.0;          ///< Voronoi clusters on both surfaces (0 for greedy)
+  double sourceLayout = 0.0;     ///< greedy: all-pairs paths + trial and error (both surfaces)
+  double targetLayout = 0.0;
+  double parameterization = 0.0; ///< both surfaces' patch maps + composition
+  double distortion = 0.0;
+  double total = 0.0;
+};
+
+/// Two isomorphic layouts (patch k on the source corresponds to patch k on the target).
+struct LayoutPair {
+  Status status;
+  LayoutMethod method = LayoutMethod::Voronoi;
+  Layout source, target;
+  SourceLayoutResult sourceStats;   ///< Voronoi method: counters (its layout moved to `source`)
+  TargetLayoutResult targetStats;
+  GreedyLayoutResult greedyStats;   ///< greedy: counters (its layouts moved out)
+  StageTimes times;
+};
+
+/// Build both layouts with the chosen method and check them (validateLayout on both surfaces,
+/// checkIsomorphic). `euler` is the surfaces' Euler characteristic.
+LayoutPair buildLayouts(const IndexedMesh& source, const std::vector<int>& sourceAnchors, const IndexedMesh& target,
+                        const std::vector<int>& targetAnchors, int euler, const CrossParameterizationOptions& options);
+
+/// Everything `crossParameterize` computed.
+struct CrossParameterizationResult {
+  Status status;
+  LayoutPair layouts;                 ///< collinear faces split for parameterization
+  PatchParameterization sourceParam, targetParam;
+  CrossMap map;
+  DistortionMetrics metrics;          ///< of M_st against the source
+  StageTimes times;
+};
+
+/// Cross-parameterize two validated surfaces of equal genus with corresponding anchors.
+CrossParameterizationResult crossParameterize(const IndexedMesh& source, const std::vector<int>& sourceAnchors,
+                                              const IndexedMesh& target, const std::vector<int>& targetAnchors,
+                                              int euler, const CrossParameterizationOptions& options = {});
+
+}  // namespace cbd

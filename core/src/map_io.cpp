@@ -1,0 +1,95 @@
+#include "cbd/map_io.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+
+#include <vcg/complex/append.h>
+
+namespace cbd {
+
+void buildMappedMesh(const Mesh& from, const std::vector<Vec3>& image, const std::vector<FacePoint>& points,
+                     const Mesh& onto, const TransferOptions& transfer, const std::vector<double>& faceStretch,
+                     Mesh& out) {
+  // vcglib 2020.09's MeshCopy takes a non-const source although it only reads it.
+  vcg::tri::Append<Mesh, Mesh>::MeshCopy(out, const_cast<Mesh&>(from));
+  for (size_t v = 0; v < out.vert.size(); ++v) {
+    out.vert[v].P() = vcg::Point3d(image[v].x(), image[v].y(), image[v].z());
+    const FacePoint& fp = points[v];
+    if (fp.face < 0) continue;
+    const auto& f = onto.face[fp.face];
+    if (transfer.vertexColor) {
+      double c[4] = {0, 0, 0, 0};
+      for (int k = 0; k < 3; ++k)
+        for (int i = 0; i < 4; ++i) c[i] += fp.bary[k] * f.cV(k)->cC()[i];
+      out.vert[v].C() = vcg::Color4b(static_cast<unsigned char>(std::lround(c[0])), static_cast<unsigned char>(std::lround(c[1])),
+                                     static_cast<unsigned char>(std::lround(c[2])), static_cast<unsigned char>(std::lround(c[3])));
+    }
+    if (transfer.vertexQuality) {
+      double q = 0;
+      for (int k = 0; k < 3; ++k) q += fp.bary[k] * f.cV(k)->cQ();
+      out.vert[v].Q() = q;
+    }
+    if (transfer.vertexTexCoord) {
+      double u = 0, w = 0;
+      for (int k = 0; k < 3; ++k) u += fp.bary[k] * f.cV(k)->cT().U(), w += fp.bary[k] * f.cV(k)->cT().V();
+      out.vert[v].T().U() = u;
+      out.vert[v].T().V() = w;
+      out.vert[v].T().N() = f.cV(0)->cT().N();
+    }
+  }
+  for (size_t f = 0; f < out.face.size() && f < faceStretch.size(); ++f) {
+    const double s = faceStretch[f];
+    out.face[f].Q() = s;
+    // Blue (compressed) - white (1) - red (stretched), on a log scale saturating at x2.
+    const double t = std::clamp(std::log2(std::max(s, 1e-9)), -1.0, 1.0);
+    const double r = t < 0 ? 1.0 + t : 1.0, g = 1.0 - std::abs(t), b = t > 0 ? 1.0 - t : 1.0;
+    out.face[f].C() = vcg::Color4b(static_cast<unsigned char>(255 * r), static_cast<unsigned char>(255 * g),
+                                   static_cast<unsigned char>(255 * b), 255);
+  }
+}
+
+Status writeCorrespondence(const std::string& path, const std::vector<FacePoint>& points, const std::vector<Vec3>& image) {
+  namespace fs = std::filesystem;
+  const fs::path target(path);
+  const fs::path tmp = target.parent_path() / ("." + target.filename().string() + ".tmp");
+  {
+    std::ofstream out(tmp);
+    if (!out) return Status::error(ErrorCode::OutputError, "cannot write '" + path + "'");
+    out << "# cbd correspondence: source_vertex target_face b0 b1 b2 x y z (0-based, input order)\n";
+    char buf[256];
+    for (size_t v = 0; v < points.size(); ++v) {
+      std::snprintf(buf, sizeof buf, "%zu %d %.17g %.17g %.17g %.17g %.17g %.17g\n", v, points[v].face, points[v].bary[0],
+                    points[v].bary[1], points[v].bary[2], image[v].x(), image[v].y(), image[v].z());
+      out << buf;
+    }
+    if (!out.good()) return Status::error(ErrorCode::OutputError, "cannot write '" + path + "'");
+  }
+  std::error_code ec;
+  fs::rename(tmp, target, ec);
+  if (ec) return Status::error(ErrorCode::OutputError, "cannot move the finished file into '" + path + "'");
+  return Status::success();
+}
+
+Status writeMorph(const std::string& dir, const Mesh& from, const std::vector<Vec3>& image, int count) {
+  if (count < 2) return Status::error(ErrorCode::InvalidArgument, "a morph needs at least 2 frames");
+  Mesh m;
+  vcg::tri::Append<Mesh, Mesh>::MeshCopy(m, const_cast<Mesh&>(from));
+  SavePlyOptions opt;
+  for (int k = 0; k < count; ++k) {
+    const double t = static_cast<double>(k) / (count - 1);
+    for (size_t v = 0; v < m.vert.size(); ++v) {
+      const auto& p = from.vert[v].cP();
+      const Vec3 q = (1.0 - t) * Vec3(p[0], p[1], p[2]) + t * image[v];
+      m.vert[v].P() = vcg::Point3d(q.x(), q.y(), q.z());
+    }
+    char name[32];
+    std::snprintf(name, sizeof name, "morph_%03d.ply", k);
+    if (Status s = savePly((std::filesystem::path(dir) / name).string(), m, opt); !s) return s;
+  }
+  return Status::success();
+}
+
+}  // namespace cbd

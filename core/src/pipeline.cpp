@@ -1,0 +1,74 @@
+#include "cbd/pipeline.h"
+
+#include <chrono>
+
+namespace cbd {
+namespace {
+double seconds(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+}  // namespace
+
+const char* layoutMethodName(LayoutMethod m) { return m == LayoutMethod::Voronoi ? "voronoi" : "greedy"; }
+
+LayoutPair buildLayouts(const IndexedMesh& source, const std::vector<int>& sa, const IndexedMesh& target,
+                        const std::vector<int>& ta, int euler, const CrossParameterizationOptions& options) {
+  LayoutPair p;
+  p.method = options.method;
+  if (options.method == LayoutMethod::Greedy) {
+    GreedyLayoutOptions g;
+    g.edgeNodes = options.edgeNodes;
+    p.greedyStats = buildGreedyLayout(source, sa, target, ta, g);
+    p.times.sourceLayout = p.greedyStats.candidateSeconds + p.greedyStats.layoutSeconds;
+    if (!p.greedyStats.status) return p.status = p.greedyStats.status, p;
+    p.source = std::move(p.greedyStats.source);
+    p.target = std::move(p.greedyStats.target);
+  } else {
+    SourceLayoutOptions so;
+    so.edgeNodes = options.edgeNodes;
+    p.sourceStats = buildSourceLayout(source, sa, so);
+    p.times.voronoi = p.sourceStats.voronoiSeconds;
+    p.times.sourceLayout = p.sourceStats.layoutSeconds;
+    if (!p.sourceStats.status) return p.status = p.sourceStats.status, p;
+    if (const LayoutCheck c = validateLayout(p.sourceStats.layout, euler); !c.status) return p.status = c.status, p;
+    TargetLayoutOptions to;
+    to.edgeNodes = options.edgeNodes;
+    p.targetStats = buildTargetLayout(p.sourceStats.layout, target, ta, to);
+    p.times.voronoi += p.targetStats.voronoiSeconds;
+    p.times.targetLayout = p.targetStats.layoutSeconds;
+    if (!p.targetStats.status) return p.status = p.targetStats.status, p;
+    p.source = std::move(p.sourceStats.layout);
+    p.target = std::move(p.targetStats.layout);
+  }
+  for (const Layout* L : {&p.source, &p.target})
+    if (const LayoutCheck c = validateLayout(*L, euler); !c.status) return p.status = c.status, p;
+  if (Status s = checkIsomorphic(p.source, p.target); !s) return p.status = s, p;
+  return p;
+}
+
+CrossParameterizationResult crossParameterize(const IndexedMesh& source, const std::vector<int>& sa,
+                                              const IndexedMesh& target, const std::vector<int>& ta, int euler,
+                                              const CrossParameterizationOptions& options) {
+  CrossParameterizationResult r;
+  const auto t0 = std::chrono::steady_clock::now();
+  r.layouts = buildLayouts(source, sa, target, ta, euler, options);
+  r.times = r.layouts.times;
+  if (!r.layouts.status) return r.status = r.layouts.status, r;
+  auto t1 = std::chrono::steady_clock::now();
+  for (Layout* L : {&r.layouts.source, &r.layouts.target}) splitCollinearFaces(*L);
+  r.sourceParam = parameterizePatches(r.layouts.source, options.parameterization);
+  if (!r.sourceParam.status) return r.status = r.sourceParam.status, r;
+  r.targetParam = parameterizePatches(r.layouts.target, options.parameterization);
+  if (!r.targetParam.status) return r.status = r.targetParam.status, r;
+  r.map = composeCrossMap(r.layouts.source, r.sourceParam, r.layouts.target, r.targetParam);
+  if (!r.map.status) return r.status = r.map.status, r;
+  r.times.parameterization = seconds(t1);
+  t1 = std::chrono::steady_clock::now();
+  r.metrics = computeDistortion(source, r.map.sourceImage, target, r.map.sourceToTarget);
+  r.times.distortion = seconds(t1);
+  if (!r.metrics.status) return r.status = r.metrics.status, r;
+  r.times.total = seconds(t0);
+  return r;
+}
+
+}  // namespace cbd

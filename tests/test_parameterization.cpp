@@ -1,0 +1,136 @@
+// Stage 4: patch parameterizations, the composed cross-map and its distortion.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "cbd/anchor_sampling.h"
+#include "cbd/pipeline.h"
+#include "cbd/validate_input.h"
+#include "support/fixtures.h"
+
+using namespace cbd;
+namespace fx = cbd::fixtures;
+
+namespace {
+int nearest(const IndexedMesh& m, const Vec3& p) {
+  int best = 0;
+  for (int v = 1; v < m.vertexCount(); ++v)
+    if ((m.positions[v] - p).squaredNorm() < (m.positions[best] - p).squaredNorm()) best = v;
+  return best;
+}
+double signedArea(const std::array<Vec2, 3>& t) {
+  return 0.5 * ((t[1] - t[0]).x() * (t[2] - t[0]).y() - (t[1] - t[0]).y() * (t[2] - t[0]).x());
+}
+}  // namespace
+
+TEST(Parameterization, EveryPatchMapsBijectivelyOntoTheTriangle) {
+  const IndexedMesh m = fx::icosphere(3);
+  SourceLayoutResult r = buildSourceLayout(m, farthestPointSampling(m, 12));
+  ASSERT_TRUE(r.status.ok());
+  splitCollinearFaces(r.layout);
+  ASSERT_TRUE(validateLayout(r.layout, 2).status.ok());
+  const PatchParameterization p = parameterizePatches(r.layout);
+  ASSERT_TRUE(p.status.ok()) << p.status.message;
+  // Positive orientation everywhere and the areas of each patch add up to the domain's.
+  std::vector<double> area(r.layout.patches.size(), 0.0);
+  for (int f = 0; f < r.layout.mesh.faceCount(); ++f) {
+    const double a = signedArea(p.cornerUV[f]);
+    EXPECT_GT(a, 0.0) << "face " << f << " folds over";
+    area[r.layout.facePatch[f]] += a;
+  }
+  const double domain = std::sqrt(3.0) / 4.0;
+  for (double a : area) EXPECT_NEAR(a, domain, 1e-9);
+  // Corners land on the domain's corners.
+  for (int f = 0; f < r.layout.mesh.faceCount(); ++f) {
+    const Patch& patch = r.layout.patches[r.layout.facePatch[f]];
+    const auto v = r.layout.mesh.faceVertices(f);
+    for (int k = 0; k < 3; ++k)
+      for (int c = 0; c < 3; ++c)
+        if (v[k] == r.layout.anchorVertices[patch.corners[c]]) EXPECT_LT((p.cornerUV[f][k] - domainCorner(c)).norm(), 1e-15);
+  }
+}
+
+TEST(CrossMap, SameLayoutOnBothSidesIsTheIdentity) {
+  // Stage-4 identity: with the very same layout on both sides the composed map must be the
+  // identity to rounding, and the metrics optimal.
+  const IndexedMesh m = fx::icosphere(3);
+  SourceLayoutResult r = buildSourceLayout(m, farthestPointSampling(m, 10));
+  ASSERT_TRUE(r.status.ok());
+  splitCollinearFaces(r.layout);
+  const PatchParameterization p = parameterizePatches(r.layout);
+  const CrossMap map = composeCrossMap(r.layout, p, r.layout, p);
+  ASSERT_TRUE(map.status.ok()) << map.status.message;
+  const double diag = boundingBoxDiagonal(m);
+  for (int v = 0; v < m.vertexCount(); ++v) EXPECT_LT((map.sourceImage[v] - m.positions[v]).norm(), 1e-9 * diag);
+  const DistortionMetrics d = computeDistortion(m, map.sourceImage, m, map.sourceToTarget);
+  ASSERT_TRUE(d.status.ok());
+  EXPECT_NEAR(d.eL2, 1.0, 1e-6);
+  EXPECT_NEAR(d.eL2Inverse, 1.0, 1e-6);
+  EXPECT_NEAR(d.eAng, 0.0, 1e-6);
+  EXPECT_NEAR(d.eAngDegrees, 0.0, 1e-6);
+  EXPECT_EQ(d.flipped, 0);
+  EXPECT_EQ(d.degenerate, 0);
+}
+
+TEST(CrossMap, SphereToEllipsoidRoundTripAndGroundTruth) {
+  const IndexedMesh s = fx::icosphere(3);
+  const IndexedMesh tu = fx::icosphere(4);
+  IndexedMesh t = tu;
+  auto deform = [](const Vec3& p) { return Vec3(1.6 * p.x(), p.y(), 0.8 * p.z()); };
+  for (auto& p : t.positions) p = deform(p);
+  const std::vector<int> sa = farthestPointSampling(s, 20);
+  std::vector<int> ta;
+  for (int v : sa) ta.push_back(nearest(tu, s.positions[v]));
+  for (LayoutMethod method : {LayoutMethod::Voronoi, LayoutMethod::Greedy}) {
+    SCOPED_TRACE(layoutMethodName(method));
+    CrossParameterizationOptions o;
+    o.method = method;
+    const CrossParameterizationResult r = crossParameterize(s, sa, t, ta, 2, o);
+    ASSERT_TRUE(r.status.ok()) << r.status.message;
+    const double diagS = boundingBoxDiagonal(s), diagT = boundingBoxDiagonal(t);
+    // Anchors land exactly on anchors.
+    for (size_t k = 0; k < sa.size(); ++k) EXPECT_LT((r.map.sourceImage[sa[k]] - t.positions[ta[k]]).norm(), 1e-12 * diagT);
+    // Every image lies on the target surface: on its face, inside it.
+    for (int v = 0; v < s.vertexCount(); ++v) {
+      const FacePoint& fp = r.map.sourceToTarget[v];
+      ASSERT_GE(fp.face, 0);
+      EXPECT_GE(fp.bary.minCoeff(), -1e-9);
+      EXPECT_NEAR(fp.bary.sum(), 1.0, 1e-9);
+      const auto& f = t.faces[fp.face];
+      const Vec3 q = fp.bary[0] * t.positions[f[0]] + fp.bary[1] * t.positions[f[1]] + fp.bary[2] * t.positions[f[2]];
+      EXPECT_LT((q - r.map.sourceImage[v]).norm(), 1e-9 * diagT);
+    }
+    // Source -> target -> source is the identity: each source vertex is carried to the
+    // target through the domain and back again.
+    const PatchLocator onTarget(r.layouts.target, r.targetParam), onSource(r.layouts.source, r.sourceParam);
+    double worst = 0;
+    const Layout& Ls = r.layouts.source;
+    for (int v = 0; v < s.vertexCount(); ++v) {
+      const int f = Ls.mesh.face(Ls.mesh.outgoing(v));
+      const auto corners = Ls.mesh.faceVertices(f);
+      Vec3 b = Vec3::Zero();
+      b[std::find(corners.begin(), corners.end(), v) - corners.begin()] = 1.0;
+      const int p = Ls.facePatch[f];
+      int g, h;
+      Vec3 bg, bh;
+      ASSERT_TRUE(onTarget.locate(p, uvAt(r.sourceParam, f, b), g, bg));
+      ASSERT_TRUE(onSource.locate(p, uvAt(r.targetParam, g, bg), h, bh));
+      const auto hv = Ls.mesh.faceVertices(h);
+      const Vec3 back = bh[0] * Ls.mesh.position(hv[0]) + bh[1] * Ls.mesh.position(hv[1]) + bh[2] * Ls.mesh.position(hv[2]);
+      worst = std::max(worst, (back - s.positions[v]).norm());
+          }
+    EXPECT_LT(worst, 1e-6 * diagS);
+    // Ground truth: the deformation is known; report the mean correspondence error.
+    double err = 0;
+    for (int v = 0; v < s.vertexCount(); ++v) err += (r.map.sourceImage[v] - deform(s.positions[v])).norm();
+    err /= s.vertexCount() * diagT;
+    RecordProperty(std::string("mean_ground_truth_error_") + layoutMethodName(method), std::to_string(err));
+    EXPECT_LT(err, 0.05);
+    // Metrics are finite and no better than their optimum.
+    EXPECT_GE(r.metrics.eL2, 1.0 - 1e-9);
+    EXPECT_GE(r.metrics.eL2Inverse, 1.0 - 1e-9);
+    EXPECT_GE(r.metrics.eAng, 0.0);
+    EXPECT_TRUE(std::isfinite(r.metrics.eL2) && std::isfinite(r.metrics.eAng));
+    EXPECT_EQ(r.metrics.flipped, 0);
+  }
+}
