@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# Set everything up, build, and run the main job on the bundled example:
-# the cow and bull from Debian's libcgal-demo with the anchors in examples/.
+# Set everything up, build, and run the main job on the bundled example: the cross-
+# parameterization of the cow onto the bull (Debian's libcgal-demo) with the anchors in examples/.
 # Usage: scripts/demo.sh [OUT_DIR]   (default: out/cow_bull)
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -14,9 +14,12 @@ set -x
   --source "$MESHES/cow.off" --source-anchors "$ROOT/examples/cow_picked_points.pp" \
   --target "$MESHES/bull.off" --target-anchors "$ROOT/examples/bull_picked_points.pp" \
   --json "$OUT/check.json"
-"$ROOT/build/cli/cbd" layout \
+"$ROOT/build/cli/cbd" map \
   --source "$MESHES/cow.off" --source-anchors "$ROOT/examples/cow_picked_points.pp" \
-  --out "$OUT/source" --json "$OUT/source_layout.json"
+  --target "$MESHES/bull.off" --target-anchors "$ROOT/examples/bull_picked_points.pp" \
+  --out "$OUT" --morph 5 --json "$OUT/map.json"
 { set +x; } 2>/dev/null
-echo "reports: $OUT/check.json, $OUT/source_layout.json"
-echo "open in MeshLab: $OUT/source/layout.ply (patches), $OUT/source/paths.ply, $OUT/source/clusters.ply"
+echo "metrics and timings: $OUT/map.json"
+echo "open in MeshLab: $OUT/mst.ply (the cow's mesh on the bull; face quality = stretch),"
+echo "  $OUT/morph_000.ply ... morph_004.ply (cow -> bull), $OUT/source/layout.ply and $OUT/target/layout.ply"
+echo "  (corresponding patches in the same colour), paths.ply and clusters.ply beside them"
