@@ -135,6 +135,7 @@ struct RunArgs {
   bool singleEdgeNode = false;
   double snapTolerance = 0.01;
   int morph = 0;
+  int smooth = 0;
 };
 
 double elapsed(std::chrono::steady_clock::time_point t0) {
@@ -146,6 +147,7 @@ cbd::CrossParameterizationOptions pipelineOptions(const RunArgs& a) {
   o.method = a.method == "greedy" ? cbd::LayoutMethod::Greedy : cbd::LayoutMethod::Voronoi;
   o.edgeNodes.minEdgeNodes = a.singleEdgeNode ? 1 : a.minEdgeNodes;
   o.edgeNodes.adaptive = !a.singleEdgeNode;
+  o.smoothing.iterations = a.smooth;
   return o;
 }
 
@@ -304,6 +306,9 @@ int runMap(const RunArgs& a) {
   if (!r.status) return finish(r.status, j, a.jsonPath);
   j["layout"] = layoutJson(r.layouts);
   const auto& m = r.metrics;
+  if (a.smooth > 0)
+    j["smoothing"] = {{"iterations", a.smooth}, {"moves", r.smoothing.moves}, {"rejected", r.smoothing.rejected},
+                      {"flipped_before", r.smoothing.flippedBefore}, {"flipped_after", r.smoothing.flippedAfter}};
   j["metrics"] = {{"e_ang", m.eAng},     {"e_ang_deg", m.eAngDegrees}, {"e_l2", m.eL2},
                   {"e_l2_inverse", m.eL2Inverse}, {"flipped", m.flipped}, {"degenerate", m.degenerate}};
   // M_st with the target's attributes, M_ts with the source's.
@@ -427,6 +432,11 @@ int main(int argc, char** argv) {
       "Writes OUT/mst.ply (the source's vertices in input order at their images on the target, the source's faces; "
       "face quality = L2 stretch), OUT/mts.ply (the inverse), OUT/correspondence.txt, both layouts, and metrics.");
   addRunOptions(cmdMap, map, true);
+  cmdMap->add_option("--smooth", map.smooth,
+                     "N sweeps relaxing M_st across patch boundaries; moves that would flip a triangle are rejected "
+                     "(mts.ply, the inverse map, is not smoothed)")
+      ->capture_default_str()
+      ->check(CLI::Range(0, 1000));
   cmdMap->add_option("--morph", map.morph, "also write K meshes OUT/morph_000.ply ... blending the source into M_st")
       ->check(CLI::Range(2, 1000));
 

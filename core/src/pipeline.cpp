@@ -62,6 +62,11 @@ CrossParameterizationResult crossParameterize(const IndexedMesh& source, const s
   if (!r.targetParam.status) return r.status = r.targetParam.status, r;
   r.map = composeCrossMap(r.layouts.source, r.sourceParam, r.layouts.target, r.targetParam);
   if (!r.map.status) return r.status = r.map.status, r;
+  if (options.smoothing.iterations > 0) {
+    r.smoothing = smoothCrossMap(source, r.layouts.source, r.sourceParam, target, r.layouts.target, r.targetParam,
+                                 r.map, options.smoothing);
+    if (!r.smoothing.status) return r.status = r.smoothing.status, r;
+  }
   r.times.parameterization = seconds(t1);
   t1 = std::chrono::steady_clock::now();
   r.metrics = computeDistortion(source, r.map.sourceImage, target, r.map.sourceToTarget);

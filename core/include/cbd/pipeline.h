@@ -9,6 +9,7 @@
 
 #include "cbd/distortion.h"
 #include "cbd/greedy_layout.h"
+#include "cbd/map_smoothing.h"
 #include "cbd/parameterization.h"
 #include "cbd/source_layout.h"
 #include "cbd/target_layout.h"
@@ -28,6 +29,7 @@ struct CrossParameterizationOptions {
   LayoutMethod method = LayoutMethod::Voronoi;
   EdgeNodeOptions edgeNodes;            ///< b = 3 adaptive; {1, false} is the paper's E1
   ParameterizationOptions parameterization;
+  MapSmoothingOptions smoothing;        ///< 0 iterations: the composed map as it is
 };
 
 /// Seconds spent in each stage.
@@ -62,6 +64,7 @@ struct CrossParameterizationResult {
   LayoutPair layouts;                 ///< collinear faces split for parameterization
   PatchParameterization sourceParam, targetParam;
   CrossMap map;
+  MapSmoothingResult smoothing;
   DistortionMetrics metrics;          ///< of M_st against the source
   StageTimes times;
 };
