@@ -163,6 +163,19 @@ std::vector<int> rotationAt(const RefinedMesh& m, const std::vector<int>& edgePa
   return out;
 }
 
+std::vector<int> inputFacePatch(const Layout& layout) {
+  const RefinedMesh& m = layout.mesh;
+  std::vector<int> patch(m.inputFaceCount(), -1);
+  std::vector<double> best(m.inputFaceCount(), -1.0);
+  for (int f = 0; f < m.faceCount(); ++f) {
+    const auto v = m.faceVertices(f);
+    const double a = (m.position(v[1]) - m.position(v[0])).cross(m.position(v[2]) - m.position(v[0])).norm();
+    const int in = m.inputFace(f);
+    if (a > best[in]) best[in] = a, patch[in] = layout.facePatch[f];
+  }
+  return patch;
+}
+
 Status assemblePatches(Layout& layout) {
   const RefinedMesh& m = layout.mesh;
   std::vector<int> anchorOf(m.vertexCount(), -1);

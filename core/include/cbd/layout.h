@@ -129,6 +129,10 @@ int leavingHalfedge(const RefinedMesh& mesh, const std::vector<int>& chain, int 
 /// Layout edges leaving vertex v, counter-clockwise (path ids of the path edges around it).
 std::vector<int> rotationAt(const RefinedMesh& mesh, const std::vector<int>& edgePath, int v);
 
+/// The patch of every face of the input mesh the layout was built on: the patch holding the
+/// largest part of it (faces crossed by a path are split among patches in `layout.mesh`).
+std::vector<int> inputFacePatch(const Layout& layout);
+
 /// Assemble `layout.patches`, `layout.rotation` and `layout.facePatch` from the paths cut into
 /// `layout.mesh` (`layout.edgePath` set). InternalError if a region is not a triangle.
 Status assemblePatches(Layout& layout);
