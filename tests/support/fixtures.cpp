@@ -50,6 +50,29 @@ IndexedMesh icosphere(int levels) {
   return m;
 }
 
+IndexedMesh uvSphere(int lon, int lat) {
+  IndexedMesh m;
+  m.positions.emplace_back(0, 0, 1);
+  for (int i = 1; i < lat; ++i)
+    for (int j = 0; j < lon; ++j) {
+      const double th = M_PI * i / lat, ph = 2 * M_PI * j / lon;
+      m.positions.emplace_back(std::sin(th) * std::cos(ph), std::sin(th) * std::sin(ph), std::cos(th));
+    }
+  m.positions.emplace_back(0, 0, -1);
+  const int south = static_cast<int>(m.positions.size()) - 1;
+  auto id = [&](int i, int j) { return 1 + (i - 1) * lon + (j % lon); };
+  for (int j = 0; j < lon; ++j) {
+    m.faces.push_back({0, id(1, j), id(1, j + 1)});
+    m.faces.push_back({south, id(lat - 1, j + 1), id(lat - 1, j)});
+  }
+  for (int i = 1; i + 1 < lat; ++i)
+    for (int j = 0; j < lon; ++j) {
+      m.faces.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
+      m.faces.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
+    }
+  return m;
+}
+
 IndexedMesh torus(double R, double r, int nu, int nv) {
   IndexedMesh m;
   for (int i = 0; i < nu; ++i)

@@ -11,6 +11,10 @@ namespace cbd::fixtures {
 /// Icosahedron subdivided `levels` times (1-to-4), projected onto the unit sphere.
 IndexedMesh icosphere(int levels);
 
+/// Unit latitude-longitude sphere with `lon` meridians and `lat` rings: few meridians and many
+/// rings give long slivers beside tiny pole triangles (a badly meshed input, Fig. 12).
+IndexedMesh uvSphere(int lon, int lat);
+
 /// Torus with major radius R, minor radius r, `nu` x `nv` quads split into triangles.
 IndexedMesh torus(double R, double r, int nu, int nv);
 
