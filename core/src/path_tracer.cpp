@@ -126,11 +126,10 @@ TracedPath PathTracer::trace(const PathQuery& q) {
 
   std::vector<double> goalDist(q.goals.size(), kInf);
   std::vector<int64_t> goalParent(q.goals.size(), kNone);
-  auto isGoalVertex = [&](int v) {
-    for (const auto& g : q.goals)
-      if (g.vertex == v) return true;
-    return false;
-  };
+  // Goals by vertex (a vertex may hold several goals, e.g. two sectors of one anchor).
+  std::unordered_map<int, std::vector<int>> goalsAt;
+  goalsAt.reserve(q.goals.size());
+  for (size_t g = 0; g < q.goals.size(); ++g) goalsAt[q.goals[g].vertex].push_back(static_cast<int>(g));
 
   auto dist = [&](int64_t n) -> double {
     if (n >= 0) return stampV_[n] == st ? distV_[n] : kInf;
@@ -155,9 +154,10 @@ TracedPath PathTracer::trace(const PathQuery& q) {
   };
   // Arrive at a goal vertex through face f (or along an edge with faces f, f2).
   auto arrive = [&](int64_t from, int v, int f, int f2, double d) {
-    for (size_t g = 0; g < q.goals.size(); ++g) {
+    const auto it = goalsAt.find(v);
+    if (it == goalsAt.end()) return;
+    for (int g : it->second) {
       const PathGoal& goal = q.goals[g];
-      if (goal.vertex != v) continue;
       if (!goal.faces.empty() && !contains(goal.faces, f) && (f2 < 0 || !contains(goal.faces, f2))) continue;
       if (d < goalDist[g]) {
         goalDist[g] = d, goalParent[g] = from;
@@ -177,7 +177,7 @@ TracedPath PathTracer::trace(const PathQuery& q) {
   auto offer = [&](int64_t from, int64_t to, double d, int f, int f2) {
     if (to >= 0) {
       const int v = static_cast<int>(to);
-      if (isGoalVertex(v)) arrive(from, v, f, f2, d);
+      arrive(from, v, f, f2, d);
       if (!vertexUsable(v)) return;
     } else {
       const int e = slotEdge_[static_cast<size_t>(-to - 1)];

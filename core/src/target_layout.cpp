@@ -199,6 +199,12 @@ TargetLayoutResult buildTargetLayout(const Layout& src, const IndexedMesh& targe
     return false;
   };
 
+  // Target clusters that share a cut.
+  std::vector<std::vector<int>> clusterNeighbours(na);
+  for (const Cut& c : r.cuts.cuts) {
+    clusterNeighbours[c.i].push_back(c.j);
+    clusterNeighbours[c.j].push_back(c.i);
+  }
   std::vector<int> queryLabel;
   std::string lastReason;
   auto tryEmbed = [&](int e) -> int {  // 1 embedded, 0 not now, -1 internal error (r.status set)
@@ -215,13 +221,23 @@ TargetLayoutResult buildTargetLayout(const Layout& src, const IndexedMesh& targe
     setSourceEdge(e, e);
     const std::vector<RegionSignature> want = regionSignatures(src.mesh, srcPartial, srcAnchorOf, src.edges);
     setSourceEdge(e, -1);
-    for (int attempt = 0; attempt < 2; ++attempt) {
-      // 0: inside the two target clusters and the region; 1: the whole region.
+    // Search rings of target clusters around the two anchors' own: 0 = their two clusters
+    // (the paper's local search), k = clusters within k cuts of them, then the whole region.
+    std::vector<int> ring(na, -1);
+    std::vector<int> frontier{se.a, se.b};
+    ring[se.a] = ring[se.b] = 0;
+    for (int attempt = 0;; ++attempt) {
+      const bool wholeRegion = frontier.empty();
       queryLabel.assign(L.mesh.faceCount(), 0);
       for (int f = 0; f < L.mesh.faceCount(); ++f) {
         const int c = tracer.faceLabel()[f];
-        if (rm.faceRegion[f] == region && (attempt == 1 || c == se.a || c == se.b)) queryLabel[f] = 1;
+        if (rm.faceRegion[f] == region && (wholeRegion || ring[c] >= 0)) queryLabel[f] = 1;
       }
+      std::vector<int> next;
+      for (int c : frontier)
+        for (int d : clusterNeighbours[c])
+          if (ring[d] < 0) ring[d] = attempt + 1, next.push_back(d);
+      frontier = std::move(next);
       PathQuery q;
       q.source = anchors[se.a];
       q.sourceFaces = sa.faces;
@@ -230,6 +246,7 @@ TargetLayoutResult buildTargetLayout(const Layout& src, const IndexedMesh& targe
       TracedPath tp = tracer.trace(q);
       if (!tp.found) {
         lastReason = attempt == 0 ? "no path inside the two target clusters" : "no path inside its region";
+        if (wholeRegion) break;
         continue;
       }
       std::vector<int> chain;
@@ -247,6 +264,7 @@ TargetLayoutResult buildTargetLayout(const Layout& src, const IndexedMesh& targe
       tracer.release(chain, e);
       ++r.rejectedPaths;
       lastReason = "its shortest path would enclose other anchors than on the source (blocking)";
+      if (wholeRegion) break;
     }
     return 0;
   };

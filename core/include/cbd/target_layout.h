@@ -12,7 +12,8 @@
 /// blocking (it stays inside the region of the partial target layout that corresponds to the
 /// source region it lies in, and after it is cut in, the regions of the partial layouts on both
 /// surfaces have the same boundaries, edge for edge, and the same anchors inside). A path is
-/// searched first inside the two anchors' target clusters (fast), then inside the whole region.
+/// searched first inside the two anchors' target clusters (fast), then in growing rings of
+/// neighbouring clusters (paths stay local, so they do not swirl), then in the whole region.
 
 #include <string>
 #include <vector>
@@ -34,7 +35,7 @@ struct TargetLayoutResult {
   Layout layout;                  ///< isomorphic to the source: same edge ids, patch k = source patch k
   CutsResult cuts;                ///< target cuts
   int embeddedInClusters = 0;     ///< paths found inside the two target clusters
-  int embeddedInRegion = 0;       ///< paths that needed the whole region
+  int embeddedInRegion = 0;       ///< paths that needed more: neighbouring clusters, or the whole region
   int postponements = 0;          ///< times an edge was postponed (ambiguous sector or no valid path yet)
   int rejectedPaths = 0;          ///< traced paths undone because they blocked (region mismatch)
   double voronoiSeconds = 0.0;

@@ -1,0 +1,315 @@
+// cbd_bench: the comparison of the paper's Table 2 / Fig. 8 and the scaling runs.
+// Every method runs on the same input in one invocation; each run is forked into a child
+// process so that its peak resident memory (getrusage) is its own. See bench/README.md.
+
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "cbd/anchor_sampling.h"
+#include "cbd/pipeline.h"
+#include "cbd/validate_input.h"
+
+namespace fs = std::filesystem;
+using namespace cbd;
+
+namespace {
+
+struct Method {
+  std::string name;  // greedy | voronoi-E1 | voronoi-C
+  CrossParameterizationOptions options;
+};
+
+std::vector<Method> methods() {
+  Method g{"greedy", {}}, e1{"voronoi-E1", {}}, c{"voronoi-C", {}};
+  g.options.method = LayoutMethod::Greedy;
+  e1.options.edgeNodes.minEdgeNodes = 1;
+  e1.options.edgeNodes.adaptive = false;
+  return {g, e1, c};
+}
+
+/// One run's numbers, as the child reports them.
+struct Run {
+  bool ok = false;
+  std::string error;
+  double eAng = 0, eAngDeg = 0, eL2 = 0, eL2Inv = 0;
+  int flipped = 0, degenerate = 0, edges = 0, multi = 0;
+  double tVoronoi = 0, tSource = 0, tTarget = 0, tParam = 0, tLayout = 0, tTotal = 0;
+  double peakMB = 0;
+};
+
+/// Run `fn` in a child process; it writes one line of results to the pipe.
+Run forked(const std::function<Run()>& fn) {
+  int fd[2];
+  if (pipe(fd) != 0) return Run{false, "pipe failed"};
+  const pid_t pid = fork();
+  if (pid == 0) {
+    close(fd[0]);
+    Run r;
+    try {
+      r = fn();
+    } catch (const std::exception& e) {
+      r.ok = false;
+      r.error = e.what();
+    }
+    std::ostringstream o;
+    o.precision(17);
+    o << r.ok << ' ' << r.eAng << ' ' << r.eAngDeg << ' ' << r.eL2 << ' ' << r.eL2Inv << ' ' << r.flipped << ' '
+      << r.degenerate << ' ' << r.edges << ' ' << r.multi << ' ' << r.tVoronoi << ' ' << r.tSource << ' ' << r.tTarget
+      << ' ' << r.tParam << ' ' << r.tLayout << ' ' << r.tTotal << ' ' << r.error << '\n';
+    const std::string s = o.str();
+    (void)!write(fd[1], s.data(), s.size());
+    _exit(0);
+  }
+  close(fd[1]);
+  std::string out;
+  char buf[4096];
+  ssize_t n;
+  while ((n = read(fd[0], buf, sizeof buf)) > 0) out.append(buf, static_cast<size_t>(n));
+  close(fd[0]);
+  int status = 0;
+  struct rusage ru {};
+  wait4(pid, &status, 0, &ru);
+  Run r;
+  std::istringstream in(out);
+  if (!(in >> r.ok >> r.eAng >> r.eAngDeg >> r.eL2 >> r.eL2Inv >> r.flipped >> r.degenerate >> r.edges >> r.multi >>
+        r.tVoronoi >> r.tSource >> r.tTarget >> r.tParam >> r.tLayout >> r.tTotal)) {
+    r.ok = false;
+    r.error = "the run crashed (status " + std::to_string(status) + ")";
+  } else {
+    std::getline(in, r.error);
+    if (!r.error.empty() && r.error[0] == ' ') r.error.erase(0, 1);
+  }
+  r.peakMB = ru.ru_maxrss / 1024.0;
+  return r;
+}
+
+Run runPipeline(const IndexedMesh& s, const std::vector<int>& sa, const IndexedMesh& t, const std::vector<int>& ta,
+                int euler, const CrossParameterizationOptions& o, bool layoutOnly) {
+  Run r;
+  const auto t0 = std::chrono::steady_clock::now();
+  if (layoutOnly) {
+    LayoutPair p = buildLayouts(s, sa, t, ta, euler, o);
+    r.ok = p.status.ok();
+    r.error = p.status.message;
+    r.edges = static_cast<int>(p.source.edges.size());
+    r.multi = p.source.multipleLinkages();
+    r.tVoronoi = p.times.voronoi, r.tSource = p.times.sourceLayout, r.tTarget = p.times.targetLayout;
+  } else {
+    CrossParameterizationResult c = crossParameterize(s, sa, t, ta, euler, o);
+    r.ok = c.status.ok();
+    r.error = c.status.message;
+    r.eAng = c.metrics.eAng, r.eAngDeg = c.metrics.eAngDegrees, r.eL2 = c.metrics.eL2, r.eL2Inv = c.metrics.eL2Inverse;
+    r.flipped = c.metrics.flipped, r.degenerate = c.metrics.degenerate;
+    r.edges = static_cast<int>(c.layouts.source.edges.size());
+    r.multi = c.layouts.source.multipleLinkages();
+    r.tVoronoi = c.times.voronoi, r.tSource = c.times.sourceLayout, r.tTarget = c.times.targetLayout;
+    r.tParam = c.times.parameterization;
+  }
+  r.tLayout = r.tVoronoi + r.tSource + r.tTarget;
+  r.tTotal = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  for (char& ch : r.error)
+    if (ch == '\n') ch = ' ';
+  return r;
+}
+
+struct Pair {
+  std::string name, source, target, sourceAnchors, targetAnchors;
+};
+
+std::string expand(std::string p, const fs::path& root) {
+  const std::string shrec = "$SHREC";
+  if (p.rfind(shrec, 0) == 0) p = (root.parent_path() / "shared/data/shrec07-fourleg").string() + p.substr(shrec.size());
+  if (!p.empty() && p[0] != '/') p = (root / p).string();
+  return p;
+}
+
+int table(const fs::path& root, const std::string& manifest, const fs::path& out) {
+  std::ifstream in(manifest);
+  if (!in) {
+    std::fprintf(stderr, "cbd_bench: cannot read manifest '%s'\n", manifest.c_str());
+    return 1;
+  }
+  fs::create_directories(out);
+  std::ofstream csv(out / "table.csv"), md(out / "table.md");
+  csv << "pair,source_vertices,target_vertices,anchors,method,status,e_ang,e_ang_deg,e_l2,e_l2_inverse,flipped,"
+         "degenerate,edges,multi_linkages,t_voronoi,t_source_layout,t_target_layout,t_layout,t_parameterization,"
+         "t_total,peak_mb,error\n";
+  md << "| pair | V src / tgt | anchors | method | E_ang | E_L2 | flipped | layout s | total s | peak MB | note |\n"
+        "|---|---|---|---|---|---|---|---|---|---|---|\n";
+  std::string line;
+  std::vector<std::string> speedups;
+  while (std::getline(in, line)) {
+    if (line.empty() || line[0] == '#') continue;
+    std::istringstream ls(line);
+    Pair p;
+    ls >> p.name >> p.source >> p.target >> p.sourceAnchors >> p.targetAnchors;
+    p.source = expand(p.source, root), p.target = expand(p.target, root);
+    p.sourceAnchors = expand(p.sourceAnchors, root), p.targetAnchors = expand(p.targetAnchors, root);
+    if (!fs::exists(p.source) || !fs::exists(p.target)) {
+      md << "| " << p.name << " | | | | | | | | | | skipped: input not present |\n";
+      std::printf("%-24s skipped (input not present)\n", p.name.c_str());
+      continue;
+    }
+    LoadedInput li;
+    loadAndValidate({p.source, p.target, p.sourceAnchors, p.targetAnchors}, {}, li);
+    if (!li.report.status) {
+      md << "| " << p.name << " | | | | | | | | | | invalid input: " << li.report.status.message << " |\n";
+      continue;
+    }
+    std::vector<int> sa, ta;
+    for (const auto& a : li.report.anchors.source) sa.push_back(a.vertex);
+    for (const auto& a : li.report.anchors.target) ta.push_back(a.vertex);
+    std::map<std::string, Run> runs;
+    for (const Method& m : methods()) {
+      const Run r = forked([&] {
+        return runPipeline(li.source, sa, li.target, ta, li.report.source.eulerCharacteristic, m.options, false);
+      });
+      runs[m.name] = r;
+      char row[1024];
+      std::snprintf(row, sizeof row, "| %s | %d / %d | %zu | %s | %s | %s | %s | %.3f | %.3f | %.0f | %s |\n",
+                    p.name.c_str(), li.report.source.vertices, li.report.target.vertices, sa.size(), m.name.c_str(),
+                    r.ok ? std::to_string(r.eAng).substr(0, 5).c_str() : "-",
+                    r.ok ? std::to_string(r.eL2).substr(0, 5).c_str() : "-",
+                    r.ok ? std::to_string(r.flipped).c_str() : "-", r.tLayout, r.tTotal, r.peakMB,
+                    r.ok ? "" : ("failed: " + r.error).substr(0, 160).c_str());
+      md << row;
+      csv << p.name << ',' << li.report.source.vertices << ',' << li.report.target.vertices << ',' << sa.size() << ','
+          << m.name << ',' << (r.ok ? "ok" : "failed") << ',' << r.eAng << ',' << r.eAngDeg << ',' << r.eL2 << ','
+          << r.eL2Inv << ',' << r.flipped << ',' << r.degenerate << ',' << r.edges << ',' << r.multi << ','
+          << r.tVoronoi << ',' << r.tSource << ',' << r.tTarget << ',' << r.tLayout << ',' << r.tParam << ','
+          << r.tTotal << ',' << r.peakMB << ",\"" << r.error << "\"\n";
+      std::printf("%-24s %-11s %s E_ang %.3f E_L2 %.3f flipped %d layout %.3fs total %.3fs peak %.0f MB %s\n",
+                  p.name.c_str(), m.name.c_str(), r.ok ? "ok    " : "FAILED", r.eAng, r.eL2, r.flipped, r.tLayout,
+                  r.tTotal, r.peakMB, r.ok ? "" : r.error.c_str());
+      std::fflush(stdout);
+    }
+    const Run &g = runs["greedy"], &c = runs["voronoi-C"];
+    if (g.ok && c.ok && c.tLayout > 0) {
+      char s[256];
+      std::snprintf(s, sizeof s, "| %s | %.1fx | %.1fx |", p.name.c_str(), g.tLayout / c.tLayout, g.tTotal / c.tTotal);
+      speedups.push_back(s);
+    }
+  }
+  md << "\nSpeed-up of the Voronoi method (C) over the greedy baseline, measured in the same run:\n\n"
+        "| pair | layout | total |\n|---|---|---|\n";
+  for (const auto& s : speedups) md << s << '\n';
+  std::printf("wrote %s and %s\n", (out / "table.csv").c_str(), (out / "table.md").c_str());
+  return 0;
+}
+
+/// 1-to-4 midpoint subdivision (the same shape at four times the faces).
+IndexedMesh subdivide(const IndexedMesh& m) {
+  IndexedMesh out = m;
+  out.faces.clear();
+  std::map<std::pair<int, int>, int> mid;
+  auto midpoint = [&](int a, int b) {
+    auto key = std::minmax(a, b);
+    auto it = mid.find(key);
+    if (it != mid.end()) return it->second;
+    out.positions.push_back(0.5 * (m.positions[a] + m.positions[b]));
+    const int id = static_cast<int>(out.positions.size()) - 1;
+    mid.emplace(key, id);
+    return id;
+  };
+  for (const auto& f : m.faces) {
+    const int a = midpoint(f[0], f[1]), b = midpoint(f[1], f[2]), c = midpoint(f[2], f[0]);
+    out.faces.push_back({f[0], a, c});
+    out.faces.push_back({f[1], b, a});
+    out.faces.push_back({f[2], c, b});
+    out.faces.push_back({a, b, c});
+  }
+  return out;
+}
+
+/// Layout time against anchors (on one mesh) and against mesh size (subdivision), both
+/// methods, the mesh paired with itself; plus one full Dijkstra sweep as the lower bound.
+int scaling(const std::string& meshPath, const fs::path& out, int maxLevel, const std::vector<int>& counts) {
+  Mesh vm;
+  if (!loadMesh(meshPath, vm).status) {
+    std::fprintf(stderr, "cbd_bench: cannot load %s\n", meshPath.c_str());
+    return 1;
+  }
+  const IndexedMesh base = toIndexed(vm);
+  const int euler = validateMesh(base, "mesh").eulerCharacteristic;
+  fs::create_directories(out);
+  std::ofstream csv(out / "scaling.csv");
+  csv << "experiment,vertices,anchors,method,status,t_voronoi,t_source_layout,t_target_layout,t_layout,t_dijkstra,peak_mb\n";
+  auto sweep = [&](const IndexedMesh& m, const std::vector<int>& a) {
+    return forked([&] {
+      Run r;
+      RefinedMesh rm(m);
+      PathTracer tracer(rm, EdgeNodeOptions{});
+      PathQuery q;
+      q.source = a[0];
+      q.distancesOnly = true;
+      for (size_t k = 1; k < a.size(); ++k) q.goals.push_back({a[k], {}, 0});
+      // Every vertex a goal: the search sweeps the whole edge-node graph once.
+      for (int v = 0; v < m.vertexCount(); v += 1) q.goals.push_back({v, {}, 0});
+      const auto t0 = std::chrono::steady_clock::now();
+      tracer.trace(q);
+      r.tTotal = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      r.ok = true;
+      return r;
+    });
+  };
+  auto record = [&](const char* exp, const IndexedMesh& m, int n) {
+    const std::vector<int> a = farthestPointSampling(m, n);
+    const Run d = sweep(m, a);
+    for (const Method& meth : methods()) {
+      if (meth.name == "voronoi-E1") continue;
+      const Run r = forked([&] { return runPipeline(m, a, m, a, euler, meth.options, true); });
+      csv << exp << ',' << m.vertexCount() << ',' << n << ',' << meth.name << ',' << (r.ok ? "ok" : "failed") << ','
+          << r.tVoronoi << ',' << r.tSource << ',' << r.tTarget << ',' << r.tLayout << ',' << d.tTotal << ','
+          << r.peakMB << '\n';
+      csv.flush();
+      std::printf("%-8s V=%-7d n=%-4d %-10s %s layout %.3fs (one Dijkstra sweep %.3fs) peak %.0f MB\n", exp,
+                  m.vertexCount(), n, meth.name.c_str(), r.ok ? "ok" : "FAILED", r.tLayout, d.tTotal, r.peakMB);
+      std::fflush(stdout);
+    }
+  };
+  for (int n : counts) record("anchors", base, n);
+  IndexedMesh m = base;
+  for (int level = 0; level <= maxLevel; ++level) {
+    record("size", m, 32);
+    if (level < maxLevel) m = subdivide(m);
+  }
+  std::printf("wrote %s\n", (out / "scaling.csv").c_str());
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const fs::path root = fs::path(argc > 0 ? argv[0] : ".").parent_path();
+  auto usage = [] {
+    std::fprintf(stderr,
+                 "usage: cbd_bench table ROOT MANIFEST OUTDIR\n"
+                 "       cbd_bench scaling MESH OUTDIR MAX_SUBDIVISION_LEVEL N1,N2,...\n"
+                 "table: for every pair of the manifest, the greedy baseline and the Voronoi method (E1: one\n"
+                 "edge node per edge; C: adaptive) -> OUTDIR/table.csv, OUTDIR/table.md.\n"
+                 "scaling: layout time against anchor count and against mesh size (1-to-4 subdivisions),\n"
+                 "with one full Dijkstra sweep of the edge-node graph as the lower bound -> OUTDIR/scaling.csv.\n");
+    return 2;
+  };
+  (void)root;
+  if (argc >= 5 && std::strcmp(argv[1], "table") == 0) return table(argv[2], argv[3], argv[4]);
+  if (argc >= 6 && std::strcmp(argv[1], "scaling") == 0) {
+    std::vector<int> counts;
+    std::stringstream ss(argv[5]);
+    for (std::string x; std::getline(ss, x, ',');) counts.push_back(std::stoi(x));
+    return scaling(argv[2], argv[3], std::stoi(argv[4]), counts);
+  }
+  return usage();
+}
