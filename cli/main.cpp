@@ -335,7 +335,7 @@ int runMap(const RunArgs& a) {
   if (cbd::Status s = cbd::writeLayout(r.layouts.source, dir + "/source"); !s) return finish(s, j, a.jsonPath);
   if (cbd::Status s = cbd::writeLayout(r.layouts.target, dir + "/target"); !s) return finish(s, j, a.jsonPath);
   if (a.morph > 0)
-    if (cbd::Status s = cbd::writeMorph(dir, in.sourceMesh, r.map.sourceImage, a.morph); !s) return finish(s, j, a.jsonPath);
+    if (cbd::Status s = cbd::writeMorph(dir, in.sourceMesh, r.map.sourceImage, sa, a.morph); !s) return finish(s, j, a.jsonPath);
   printLayout(r.layouts);
   std::printf("map     E_ang %.4f (%.2f deg), E_L2 %.4f (inverse %.4f), %d flipped, %d degenerate triangles\n", m.eAng,
               m.eAngDegrees, m.eL2, m.eL2Inverse, m.flipped, m.degenerate);
@@ -437,7 +437,7 @@ int main(int argc, char** argv) {
                      "(mts.ply, the inverse map, is not smoothed)")
       ->capture_default_str()
       ->check(CLI::Range(0, 1000));
-  cmdMap->add_option("--morph", map.morph, "also write K meshes OUT/morph_000.ply ... blending the source into M_st")
+  cmdMap->add_option("--morph", map.morph, "also write K meshes OUT/morph_000.ply ... blending the source (fitted onto the target by its anchors) into M_st")
       ->check(CLI::Range(2, 1000));
 
   SampleArgs sample;

@@ -6,6 +6,8 @@
 #include <filesystem>
 #include <fstream>
 
+#include <Eigen/Geometry>
+
 #include <vcg/complex/append.h>
 
 namespace cbd {
@@ -73,8 +75,17 @@ Status writeCorrespondence(const std::string& path, const std::vector<FacePoint>
   return Status::success();
 }
 
-Status writeMorph(const std::string& dir, const Mesh& from, const std::vector<Vec3>& image, int count) {
+Status writeMorph(const std::string& dir, const Mesh& from, const std::vector<Vec3>& image,
+                  const std::vector<int>& anchors, int count) {
   if (count < 2) return Status::error(ErrorCode::InvalidArgument, "a morph needs at least 2 frames");
+  // Best similarity taking the source anchors onto their images.
+  Eigen::Matrix3Xd src(3, anchors.size()), dst(3, anchors.size());
+  for (size_t k = 0; k < anchors.size(); ++k) {
+    const auto& p = from.vert[anchors[k]].cP();
+    src.col(k) = Vec3(p[0], p[1], p[2]);
+    dst.col(k) = image[anchors[k]];
+  }
+  const Eigen::Matrix4d fit = anchors.size() >= 3 ? Eigen::umeyama(src, dst, true) : Eigen::Matrix4d::Identity();
   Mesh m;
   vcg::tri::Append<Mesh, Mesh>::MeshCopy(m, const_cast<Mesh&>(from));
   SavePlyOptions opt;
@@ -82,7 +93,8 @@ Status writeMorph(const std::string& dir, const Mesh& from, const std::vector<Ve
     const double t = static_cast<double>(k) / (count - 1);
     for (size_t v = 0; v < m.vert.size(); ++v) {
       const auto& p = from.vert[v].cP();
-      const Vec3 q = (1.0 - t) * Vec3(p[0], p[1], p[2]) + t * image[v];
+      const Vec3 aligned = (fit * Eigen::Vector4d(p[0], p[1], p[2], 1.0)).head<3>();
+      const Vec3 q = (1.0 - t) * aligned + t * image[v];
       m.vert[v].P() = vcg::Point3d(q.x(), q.y(), q.z());
     }
     char name[32];

@@ -32,7 +32,11 @@ Status writeCorrespondence(const std::string& path, const std::vector<FacePoint>
                            const std::vector<Vec3>& image);
 
 /// Write `count` meshes `dir/morph_000.ply` ... blending `from` (t = 0) into its image (t = 1)
-/// linearly, as in the paper's Fig. 10-11. OutputError on failure.
-Status writeMorph(const std::string& dir, const Mesh& from, const std::vector<Vec3>& image, int count);
+/// linearly, as in the paper's Fig. 10-11. `from` is first moved onto the image by the
+/// similarity (rotation, uniform scale, translation) that best fits its anchors onto theirs
+/// (Umeyama 1991), so models posed in different frames blend without collapsing.
+/// OutputError on failure.
+Status writeMorph(const std::string& dir, const Mesh& from, const std::vector<Vec3>& image,
+                  const std::vector<int>& anchors, int count);
 
 }  // namespace cbd
