@@ -177,3 +177,13 @@ TEST(ValidateInput, BadSourceMeshIsReportedFirst) {
   EXPECT_EQ(r.status.code, ErrorCode::OpenBoundary);
   EXPECT_EQ(r.status.message.rfind("source mesh", 0), 0u) << r.status.message;
 }
+
+TEST(ValidateInput, TooManyAnchors) {
+  const IndexedMesh s = fx::icosphere(1);  // 42 vertices: every vertex may be an anchor
+  std::vector<int> all;
+  for (int v = 0; v < 42; ++v) all.push_back(v);
+  EXPECT_TRUE(validateInput(s, s, namedAt(s, all, "s"), namedAt(s, all, "t")).status.ok());
+  all.push_back(0);  // one more anchor than vertices
+  const AnchorSet a = namedAt(s, all, "s");
+  EXPECT_EQ(validateInput(s, s, a, a).status.code, ErrorCode::TooManyAnchors);
+}

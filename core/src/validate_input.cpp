@@ -294,6 +294,16 @@ InputReport validateInput(const IndexedMesh& source, const IndexedMesh& target,
                                  " corresponding anchors given; at least 3 are needed (more for a good map)");
     return r;
   }
+  // Every anchor needs a vertex of its own (a layout can use every vertex as an anchor).
+  const int capacity = std::min(r.source.vertices, r.target.vertices);
+  if (static_cast<int>(si.size()) > capacity) {
+    r.status = Status::error(ErrorCode::TooManyAnchors,
+                             std::to_string(si.size()) + " anchors on meshes of " + std::to_string(r.source.vertices) +
+                                 " and " + std::to_string(r.target.vertices) +
+                                 " vertices: each anchor needs a vertex of its own (at most " +
+                                 std::to_string(capacity) + " here); remove anchors or refine the meshes");
+    return r;
+  }
   std::vector<SnappedAnchor> ss, ts;
   if (Status s = snapAnchors(source, sourceAnchors, options.snapTolerance, "source", ss); !s) return r.status = s, r;
   if (Status s = snapAnchors(target, targetAnchors, options.snapTolerance, "target", ts); !s) return r.status = s, r;

@@ -37,7 +37,7 @@ enum class ErrorCode {
   AnchorOffSurface,      ///< an anchor lies farther from the mesh than the snap tolerance
   AnchorsShareVertex,    ///< two anchors snap to the same vertex
   TooFewAnchors,         ///< fewer than three anchors (or too few for the surface's genus)
-  TooManyAnchors,        ///< more anchors than the mesh can separate
+  TooManyAnchors,        ///< more anchors than the smaller mesh has vertices
   // algorithm
   LayoutFailed,          ///< a common base domain could not be completed
   InternalError          ///< a broken invariant: a bug, please report it

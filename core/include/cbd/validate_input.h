@@ -61,7 +61,8 @@ struct InputFiles {
 
 /// Check a source/target pair with its anchors: both meshes valid, same genus (GenusMismatch),
 /// anchors matched by name (`matchAnchors`), snapped within tolerance (`snapAnchors`), at least
-/// three and enough for the genus (TooFewAnchors). The meshes are not modified.
+/// three (TooFewAnchors) and no more than the smaller mesh has vertices (TooManyAnchors).
+/// The meshes are not modified.
 InputReport validateInput(const IndexedMesh& source, const IndexedMesh& target,
                           const AnchorSet& sourceAnchors, const AnchorSet& targetAnchors,
                           const ValidationOptions& options = {}, bool sourceHadPolygons = false,
