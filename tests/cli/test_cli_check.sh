@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# `cbd check` end to end: the bundled real pair passes; each bad input gives its documented
-# status and exit code, one line on stderr, and leaves the input files untouched.
+# The CLI end to end: `cbd check` passes the bundled real pair and gives every bad input its documented
+# status and exit code, one line on stderr; `cbd layout` and `cbd map` run on the bundled pair;
+# no input file is ever changed.
 # Usage: test_cli_check.sh CBD_BINARY EXAMPLES_DIR WORK_DIR
 set -uo pipefail
 CBD="$1"; EXAMPLES="$2"; WORK="$3"
@@ -97,6 +98,24 @@ printf '0\n1\n2\n99\n' > octa_range.vts
 printf '0\n1\n2\n' > octa_idx.vts
 printf '<!DOCTYPE PickedPoints>\n<PickedPoints>\n <point x="1" y="0" z="0" name="xp"/>\n <point x="1" y="0\n</PickedPoints>\n' > malformed.pp
 
+# degenerate face: a vertex moved onto the midpoint of the opposite edge of a face
+sed 's/^0 0 1$/0.5 0.5 0/' octa.off > degenerate.off
+# duplicate face
+{ sed '2s/.*/6 9 0/' octa.off; echo "3 0 2 4"; } > duplicate.off
+# non-manifold vertex: an octahedron and its point reflection through its vertex 0 (1 0 0)
+python3 - <<'PY'
+V=[(1,0,0),(-1,0,0),(0,1,0),(0,-1,0),(0,0,1),(0,0,-1)]
+F=[(0,2,4),(2,1,4),(1,3,4),(3,0,4),(2,0,5),(1,2,5),(3,1,5),(0,3,5)]
+V2=V+[(2-x,-y,-z) for (x,y,z) in V[1:]]
+m=lambda v: 0 if v==0 else v+5
+F2=F+[(m(a),m(c),m(b)) for (a,b,c) in F]
+with open('nmv.off','w') as f:
+    f.write('OFF\n%d %d 0\n'%(len(V2),len(F2)))
+    for p in V2: f.write('%g %g %g\n'%p)
+    for t in F2: f.write('3 %d %d %d\n'%t)
+PY
+printf 'xp 1 0 0\nxm -1 0 0\nyp 0 1 0\nym 0 -1 0\nzp 0 0 1\nzm 0 0 -1\nxp2 1 0 0\n' > octa7.txt
+
 P=(--source-anchors octa.txt --target-anchors octa.txt)
 expect ok_octahedron        ok                   -- --source octa.off --target octa.off "${P[@]}"
 expect ok_index_lists       ok                   -- --source octa.off --target octa.off --source-anchors octa_idx.vts --target-anchors octa_idx.vts
@@ -119,6 +138,10 @@ expect index_range          anchor_index_out_of_range -- --source octa.off --tar
 expect off_surface          anchor_off_surface   -- --source octa.off --target octa.off --source-anchors octa.txt --target-anchors octa_far.txt
 expect share_vertex         anchors_share_vertex -- --source octa.off --target octa.off --source-anchors octa.txt --target-anchors octa_share.txt
 expect too_few              too_few_anchors      -- --source octa.off --target octa.off --source-anchors octa2.txt --target-anchors octa2.txt
+expect degenerate           degenerate_face      -- --source degenerate.off --target octa.off "${P[@]}"
+expect duplicate_face       duplicate_face       -- --source duplicate.off --target octa.off "${P[@]}"
+expect nonmanifold_vertex   non_manifold_vertex  -- --source nmv.off --target octa.off "${P[@]}"
+expect too_many             too_many_anchors     -- --source octa.off --target octa.off --source-anchors octa7.txt --target-anchors octa7.txt
 
 # Argument errors: exit 2 and a line on stderr.
 "$CBD" check --source octa.off >/dev/null 2>args.err; rc=$?
@@ -140,7 +163,6 @@ if [ -f "$MESHES/cow.off" ] && [ -f "$EXAMPLES/cow_picked_points.pp" ]; then
   n=$(python3 -c "import json;d=json.load(open('cow_bull.json'));print(d['source']['anchors'], d['source']['genus'], d['target']['genus'], d['source']['vertices'])")
   set -- $n
   [ "$1" -ge 20 ] && [ "$2" = 0 ] && [ "$3" = 0 ] && [ "$4" = 2904 ] && ok "cow/bull report: $n" || bad "cow/bull report: $n"
-  [ "$sum_before" = "$(md5sum "$MESHES/cow.off" "$MESHES/bull.off" "$EXAMPLES"/*.pp)" ] && ok "real inputs untouched" || bad "real inputs modified"
   # The source layout of the bundled example: outputs exist, counts are those of a triangulation.
   "$CBD" layout --source "$MESHES/cow.off" --source-anchors "$EXAMPLES/cow_picked_points.pp" --out layout_cow \
     --json layout_cow.json >/dev/null 2>layout.err; rc=$?
@@ -155,6 +177,42 @@ if [ -f "$MESHES/cow.off" ] && [ -f "$EXAMPLES/cow_picked_points.pp" ]; then
   "$CBD" layout --source "$MESHES/cow.off" --source-anchors "$EXAMPLES/cow_picked_points.pp" --out /proc/nope \
     >/dev/null 2>&1; rc=$?
   [ "$rc" = "$(code_of output_error)" ] && ok "cbd layout into an unwritable folder: exit $rc" || bad "unwritable layout folder: exit $rc"
+  # The main job: the bull mapped onto the cow, both methods.
+  for method in voronoi greedy; do
+    "$CBD" map --source "$MESHES/bull.off" --source-anchors "$EXAMPLES/bull_picked_points.pp" \
+      --target "$MESHES/cow.off" --target-anchors "$EXAMPLES/cow_picked_points.pp" --method $method \
+      --out map_$method --morph 3 --json map_$method.json >/dev/null 2>map.err; rc=$?
+    res=$(python3 - "$method" <<'PY'
+import json, sys
+m = sys.argv[1]
+d = json.load(open('map_%s.json' % m))
+def vcount(p):
+    with open(p, 'rb') as f:
+        for line in f:
+            line = line.decode().strip()
+            if line.startswith('element vertex'): return int(line.split()[-1])
+            if line == 'end_header': return -1
+met = d['metrics']
+ok = (d['status'] == 'ok' and vcount('map_%s/mst.ply' % m) == 6200 and vcount('map_%s/mts.ply' % m) == 2904
+      and met['e_l2'] >= 1.0 and met['e_ang'] >= 0.0 and met['e_l2_inverse'] >= 1.0
+      and all(k in d['timing_s'] for k in ('voronoi', 'source_layout', 'target_layout', 'parameterization', 'total'))
+      and d['layout']['edges'] == 3 * (28 - 2) and d['layout']['patches'] == 2 * (28 - 2))
+lines = open('map_%s/correspondence.txt' % m).read().splitlines()
+ok = ok and len(lines) == 6201
+print('ok' if ok else 'bad', 'E_L2 %.3f E_ang %.3f flipped %d' % (met['e_l2'], met['e_ang'], met['flipped']))
+PY
+)
+    if [ "$rc" = 0 ] && [ "${res%% *}" = ok ] && [ -s map_$method/morph_002.ply ] && [ -s map_$method/source/layout.ply ]; then
+      ok "cbd map bull -> cow ($method): $res"
+    else
+      bad "cbd map bull -> cow ($method): exit $rc, $res $(cat map.err)"
+    fi
+  done
+  "$CBD" map --source "$MESHES/bull.off" --source-anchors "$EXAMPLES/bull_picked_points.pp" \
+    --target "$MESHES/cow.off" --target-anchors "$EXAMPLES/cow_picked_points.pp" --out /proc/nope >/dev/null 2>&1; rc=$?
+  [ "$rc" = "$(code_of output_error)" ] && ok "cbd map into an unwritable folder: exit $rc" || bad "unwritable map folder: exit $rc"
+  # No run above changed an input file.
+  [ "$sum_before" = "$(md5sum "$MESHES/cow.off" "$MESHES/bull.off" "$EXAMPLES"/*.pp)" ] && ok "real inputs untouched" || bad "real inputs modified"
 else
   bad "bundled example missing: run scripts/setup.sh (cow.off) / examples/*.pp"
 fi
