@@ -1,0 +1,67 @@
+// Robustness: random anchor sets on genus 0, 1, 2 (capped here; bench/ runs hundreds), and
+// determinism across runs and thread counts.
+#include <gtest/gtest.h>
+
+#include "cbd/anchor_sampling.h"
+#include "cbd/pipeline.h"
+#include "support/fixtures.h"
+#include "support/stress.h"
+
+using namespace cbd;
+
+TEST(Stress, RandomAnchorsEitherSucceedWithAllInvariantsOrFailTyped) {
+  for (int genus = 0; genus <= 2; ++genus) {
+    const stress::SyntheticPair pair = stress::makePair(genus);
+    int ok = 0, runs = 0;
+    for (int count : {4 + 2 * genus, 9, 17, 33}) {
+      for (unsigned seed = 1; seed <= 3; ++seed) {
+        for (bool farthest : {true, false}) {
+          SCOPED_TRACE(pair.name + ", " + std::to_string(count) + " anchors, seed " + std::to_string(seed) +
+                       (farthest ? " farthest" : " random"));
+          const auto sa = stress::randomAnchors(pair.source, count, seed * 7919u + count, farthest);
+          const stress::Outcome o = stress::run(pair, sa);
+          ++runs;
+          if (o.code == ErrorCode::AnchorsShareVertex) continue;  // the synthetic transfer merged two
+          if (o.ok) {
+            ++ok;
+            EXPECT_TRUE(o.invariantsHold);
+          } else {
+            // A clear, typed failure and nothing else.
+            EXPECT_TRUE(o.code == ErrorCode::LayoutFailed || o.code == ErrorCode::TooFewAnchors) << o.message;
+            EXPECT_FALSE(o.message.empty());
+          }
+        }
+      }
+    }
+    RecordProperty("success_genus_" + std::to_string(genus), std::to_string(ok) + "/" + std::to_string(runs));
+    // Well-spread (farthest-point) anchor sets of moderate size must work on every genus.
+    EXPECT_GT(ok, runs / 3) << pair.name;
+  }
+}
+
+TEST(Determinism, SameInputSameOutputAcrossRunsAndThreadCounts) {
+  const stress::SyntheticPair pair = stress::makePair(0);
+  const auto sa = farthestPointSampling(pair.source, 20);
+  std::vector<int> ta;
+  for (int v : sa) ta.push_back(pair.targetOf[v]);
+  CrossParameterizationOptions one, two;
+  one.parameterization.threads = 1;
+  two.parameterization.threads = 2;
+  const auto a = crossParameterize(pair.source, sa, pair.target, ta, 2, one);
+  const auto b = crossParameterize(pair.source, sa, pair.target, ta, 2, two);
+  const auto c = crossParameterize(pair.source, sa, pair.target, ta, 2, two);
+  ASSERT_TRUE(a.status.ok() && b.status.ok() && c.status.ok());
+  for (const auto* r : {&b, &c}) {
+    ASSERT_EQ(r->map.sourceImage.size(), a.map.sourceImage.size());
+    for (size_t v = 0; v < a.map.sourceImage.size(); ++v) {
+      EXPECT_EQ(r->map.sourceImage[v], a.map.sourceImage[v]);  // bit for bit
+      EXPECT_EQ(r->map.sourceToTarget[v].face, a.map.sourceToTarget[v].face);
+    }
+    ASSERT_EQ(r->layouts.source.edges.size(), a.layouts.source.edges.size());
+    for (size_t e = 0; e < a.layouts.source.edges.size(); ++e) {
+      EXPECT_EQ(r->layouts.source.edges[e].vertices, a.layouts.source.edges[e].vertices);
+      EXPECT_EQ(r->layouts.target.edges[e].vertices, a.layouts.target.edges[e].vertices);
+    }
+    EXPECT_EQ(r->metrics.eL2, a.metrics.eL2);
+  }
+}
