@@ -28,6 +28,7 @@ PACKAGES=(
   qtbase5-dev libqt5opengl5-dev libqt5xmlpatterns5-dev libglew-dev libglu1-mesa-dev
   meshlab xvfb xauth x11-apps imagemagick
   libcgal-demo gnuplot-nox
+  clang libclang-rt-14-dev
 )
 
 missing=()

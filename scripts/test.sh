@@ -1,9 +1,38 @@
 #!/usr/bin/env bash
-# Set everything up (Debian packages, MeshLab SDK), build, and run the test suite.
+# Set everything up (Debian packages, MeshLab SDK), build, and pass the test suite:
+#   1. the release build: every unit, CLI and plugin test (ctest, label "slow" excluded);
+#   2. the same suite built with AddressSanitizer + UndefinedBehaviorSanitizer (no plugin:
+#      MeshLab itself is not built with them);
+#   3. a short libFuzzer run of the anchor parsers and the mesh loaders (FUZZ_SECONDS each,
+#      default 30; 0 skips it).
 # Usage: scripts/test.sh            (as root on Debian 12; idempotent)
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+FUZZ_SECONDS="${FUZZ_SECONDS:-30}"
 "$ROOT/scripts/setup.sh"
+
+echo "== release build and tests"
 "$ROOT/scripts/build.sh" "$ROOT/build"
-cd "$ROOT/build"
-ctest --output-on-failure --timeout 900 -LE slow -j "$(nproc)"
+(cd "$ROOT/build" && ctest --output-on-failure --timeout 900 -LE slow -j "$(nproc)")
+
+echo "== AddressSanitizer + UndefinedBehaviorSanitizer build and tests"
+"$ROOT/scripts/build.sh" "$ROOT/build-asan" -DCBD_SANITIZE=ON -DCBD_BUILD_PLUGIN=OFF -DCMAKE_BUILD_TYPE=RelWithDebInfo
+(cd "$ROOT/build-asan" && ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
+   ctest --output-on-failure --timeout 900 -LE slow -j "$(nproc)")
+
+if [ "$FUZZ_SECONDS" -gt 0 ]; then
+  echo "== libFuzzer: ${FUZZ_SECONDS}s per target"
+  if [ ! -f "$ROOT/build-fuzz/CMakeCache.txt" ]; then
+    cmake -S "$ROOT" -B "$ROOT/build-fuzz" -G Ninja -DCMAKE_CXX_COMPILER=clang++ -DCBD_FUZZ=ON \
+      -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
+  fi
+  cmake --build "$ROOT/build-fuzz" --parallel "$(nproc)"
+  for t in anchors mesh; do
+    work="$(mktemp -d)"
+    cp -r "$ROOT/tests/fuzz/corpus/$t/." "$work/"
+    "$ROOT/build-fuzz/tests/fuzz/fuzz_$t" -max_total_time="$FUZZ_SECONDS" -print_final_stats=1 \
+      -artifact_prefix="$ROOT/build-fuzz/crash-$t-" "$work" 2>&1 | tail -n 3
+    rm -rf "$work"
+  done
+  echo "fuzz: 2 passed, 0 failed"
+fi

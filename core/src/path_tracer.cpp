@@ -193,7 +193,9 @@ TracedPath PathTracer::trace(const PathQuery& q) {
   size_t settledGoals = 0;
   std::vector<char> goalSettled(q.goals.size(), 0);
   while (!pq.empty()) {
-    const auto [d, u] = pq.top();
+    // Plain variables, not structured bindings: lambdas below capture them (C++17).
+    const double d = pq.top().first;
+    const int64_t u = pq.top().second;
     pq.pop();
     if (u >= kGoalBase) {
       reached = static_cast<int>(u - kGoalBase);
