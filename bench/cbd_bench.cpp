@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <functional>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -20,6 +21,7 @@
 #include "cbd/anchor_sampling.h"
 #include "cbd/pipeline.h"
 #include "cbd/validate_input.h"
+#include "support/stress.h"
 
 namespace fs = std::filesystem;
 using namespace cbd;
@@ -289,6 +291,53 @@ int scaling(const std::string& meshPath, const fs::path& out, int maxLevel, cons
   return 0;
 }
 
+/// Random-anchor stress: success rate of both methods per genus and anchor count.
+int stressRuns(const fs::path& out, int setsPerCount, const std::vector<int>& counts) {
+  fs::create_directories(out);
+  std::ofstream csv(out / "stress.csv"), md(out / "stress.md");
+  csv << "genus,pair,anchors,sampling,seed,method,status,flipped,invariants,message\n";
+  md << "| genus | pair | anchors | sampling | Voronoi ok | greedy ok | Voronoi 0 flipped |\n|---|---|---|---|---|---|---|\n";
+  for (int genus = 0; genus <= 2; ++genus) {
+    const stress::SyntheticPair pair = stress::makePair(genus);
+    for (int n : counts) {
+      for (bool farthest : {true, false}) {
+        int okV = 0, okG = 0, zeroFlip = 0, runs = 0;
+        for (int k = 0; k < setsPerCount; ++k) {
+          const unsigned seed = 1000u * static_cast<unsigned>(n) + static_cast<unsigned>(k);
+          const auto sa = stress::randomAnchors(pair.source, n, seed, farthest);
+          bool counted = false;
+          for (LayoutMethod m : {LayoutMethod::Voronoi, LayoutMethod::Greedy}) {
+            const Run r = forked([&] {
+              const stress::Outcome o = stress::run(pair, sa, m);
+              Run x;
+              x.ok = o.ok && o.invariantsHold;
+              x.flipped = o.flipped;
+              x.error = o.ok ? (o.invariantsHold ? "" : "invariant broken") : std::string(errorCodeName(o.code));
+              if (o.code == ErrorCode::AnchorsShareVertex) x.error = "skip";
+              return x;
+            });
+            if (r.error == "skip") break;
+            if (!counted) ++runs, counted = true;
+            const bool isV = m == LayoutMethod::Voronoi;
+            if (r.ok) (isV ? okV : okG)++;
+            if (r.ok && isV && r.flipped == 0) ++zeroFlip;
+            csv << genus << ",\"" << pair.name << "\"," << n << ',' << (farthest ? "farthest" : "random") << ',' << seed
+                << ',' << layoutMethodName(m) << ',' << (r.ok ? "ok" : "failed") << ',' << r.flipped << ','
+                << (r.ok ? 1 : 0) << ",\"" << r.error << "\"\n";
+          }
+        }
+        md << "| " << genus << " | " << pair.name << " | " << n << " | " << (farthest ? "farthest-point" : "uniform random")
+           << " | " << okV << "/" << runs << " | " << okG << "/" << runs << " | " << zeroFlip << "/" << runs << " |\n";
+        std::printf("genus %d n=%-4d %-8s voronoi %d/%d greedy %d/%d (voronoi with 0 flipped: %d)\n", genus, n,
+                    farthest ? "farthest" : "random", okV, runs, okG, runs, zeroFlip);
+        std::fflush(stdout);
+      }
+    }
+  }
+  std::printf("wrote %s and %s\n", (out / "stress.csv").c_str(), (out / "stress.md").c_str());
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -297,10 +346,13 @@ int main(int argc, char** argv) {
     std::fprintf(stderr,
                  "usage: cbd_bench table ROOT MANIFEST OUTDIR\n"
                  "       cbd_bench scaling MESH OUTDIR MAX_SUBDIVISION_LEVEL N1,N2,...\n"
+                 "       cbd_bench stress OUTDIR SETS_PER_COUNT N1,N2,...\n"
                  "table: for every pair of the manifest, the greedy baseline and the Voronoi method (E1: one\n"
                  "edge node per edge; C: adaptive) -> OUTDIR/table.csv, OUTDIR/table.md.\n"
                  "scaling: layout time against anchor count and against mesh size (1-to-4 subdivisions),\n"
-                 "with one full Dijkstra sweep of the edge-node graph as the lower bound -> OUTDIR/scaling.csv.\n");
+                 "with one full Dijkstra sweep of the edge-node graph as the lower bound -> OUTDIR/scaling.csv.\n"
+                 "stress: random and farthest-point anchor sets on synthetic genus 0/1/2 pairs, both methods\n"
+                 "-> OUTDIR/stress.csv, OUTDIR/stress.md.\n");
     return 2;
   };
   (void)root;
@@ -310,6 +362,12 @@ int main(int argc, char** argv) {
     std::stringstream ss(argv[5]);
     for (std::string x; std::getline(ss, x, ',');) counts.push_back(std::stoi(x));
     return scaling(argv[2], argv[3], std::stoi(argv[4]), counts);
+  }
+  if (argc >= 5 && std::strcmp(argv[1], "stress") == 0) {
+    std::vector<int> counts;
+    std::stringstream ss(argv[4]);
+    for (std::string x; std::getline(ss, x, ',');) counts.push_back(std::stoi(x));
+    return stressRuns(argv[2], std::stoi(argv[3]), counts);
   }
   return usage();
 }
