@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <cstdint>
 #include <fstream>
 
 #include "cbd/mesh.h"
@@ -132,4 +133,26 @@ TEST(MeshIO, Errors) {
   EXPECT_TRUE(code == ErrorCode::EmptyMesh || code == ErrorCode::MalformedMesh);
   SavePlyOptions opt;
   EXPECT_EQ(savePly(d.file("nodir/x.ply"), m, opt).code, ErrorCode::OutputError);
+}
+
+TEST(MeshIO, FuzzRegressions) {
+  // Found by tests/fuzz/fuzz_mesh: an OFF face with a negative or too-large vertex index made
+  // vcglib index out of bounds; a short ASCII STL was sometimes read as binary.
+  TempDir d;
+  Mesh m;
+  write(d.file("neg.off"), "OFF\n4 4 0\n1 1 1\n1 -1 -1\n-1 1 -1\n-1 -1 1\n3 0 1 2\n3 0 3 -2\n3 0 2 3\n3 1 3 2\n");
+  EXPECT_EQ(loadMesh(d.file("neg.off"), m).status.code, ErrorCode::MalformedMesh);
+  write(d.file("big.off"), "OFF\n4 1 0\n1 1 1\n1 -1 -1\n-1 1 -1\n-1 -1 1\n3 0 1 99\n");
+  EXPECT_EQ(loadMesh(d.file("big.off"), m).status.code, ErrorCode::MalformedMesh);
+  write(d.file("short.off"), "OFF\n4 4 0\n1 1 1\n");
+  EXPECT_EQ(loadMesh(d.file("short.off"), m).status.code, ErrorCode::MalformedMesh);
+  write(d.file("junk.stl"), "this is not an stl file at all, just text long enough to look like a header......\n");
+  EXPECT_EQ(loadMesh(d.file("junk.stl"), m).status.code, ErrorCode::MalformedMesh);
+  // A binary STL claiming a billion faces in a tiny file.
+  std::string bin(80, ' ');
+  const uint32_t n = 1000000000u;
+  bin.append(reinterpret_cast<const char*>(&n), 4);
+  bin.append(50, '\0');
+  write(d.file("lie.stl"), bin);
+  EXPECT_EQ(loadMesh(d.file("lie.stl"), m).status.code, ErrorCode::MalformedMesh);
 }

@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -9,7 +12,6 @@
 #include <system_error>
 
 #include <wrap/io_trimesh/export_ply.h>
-#include <wrap/io_trimesh/import_off.h>
 #include <wrap/io_trimesh/import_ply.h>
 #include <wrap/io_trimesh/import_stl.h>
 
@@ -83,6 +85,229 @@ std::string readObj(const std::string& path, Mesh& mesh, int& mask) {
   return {};
 }
 
+// OFF (also COFF, NOFF, CNOFF, STOFF...): read here rather than by vcglib 2020.09's
+// ImporterOFF, which fuzzing showed indexing out of bounds on malformed files (negative
+// indices, binary junk, counts it parses differently). Vertex colours (0-255 integers or 0-1
+// floats) are kept. Returns an error text, empty on success.
+std::string readOff(const std::string& path, Mesh& mesh, int& mask) {
+  namespace io = vcg::tri::io;
+  std::ifstream in(path);
+  std::vector<std::vector<std::string>> lines;
+  for (std::string line; std::getline(in, line);) {
+    const auto hash = line.find('#');
+    if (hash != std::string::npos) line.resize(hash);
+    for (unsigned char c : line)
+      if ((c < 32 && c != '\t' && c != '\r') || c > 126) return "binary data in a text format";
+    std::istringstream ls(line);
+    std::vector<std::string> tok;
+    for (std::string t; ls >> t;) tok.push_back(t);
+    if (!tok.empty()) lines.push_back(std::move(tok));
+  }
+  if (lines.empty()) return "empty file";
+  std::string magic = lines[0][0];
+  if (magic.size() < 3 || magic.compare(magic.size() - 3, 3, "OFF") != 0) return "no OFF header";
+  const std::string flags = magic.substr(0, magic.size() - 3);
+  if (flags.find('n') != std::string::npos || flags.find('4') != std::string::npos)
+    return "only 3D OFF is supported (found '" + magic + "')";
+  const bool hasST = flags.find("ST") != std::string::npos, hasC = flags.find('C') != std::string::npos,
+             hasN = flags.find('N') != std::string::npos;
+  // Any number, NaN and infinity included: validation reports those as InvalidCoordinates.
+  auto num = [](const std::string& t, double& v) {
+    char* end = nullptr;
+    v = std::strtod(t.c_str(), &end);
+    return end && *end == '\0';
+  };
+  auto integer = [](const std::string& t, long& v) {
+    char* end = nullptr;
+    v = std::strtol(t.c_str(), &end, 10);
+    return end && *end == '\0';
+  };
+  size_t next = 1;
+  std::vector<std::string> counts(lines[0].begin() + 1, lines[0].end());
+  if (counts.empty()) {
+    if (lines.size() < 2) return "no vertex/face counts";
+    counts = lines[next++];
+  }
+  long nv = -1, nf = -1;
+  if (counts.size() < 2 || !integer(counts[0], nv) || !integer(counts[1], nf) || nv < 0 || nf < 0)
+    return "bad vertex/face counts";
+  if (lines.size() < next + static_cast<size_t>(nv) + static_cast<size_t>(nf))
+    return "fewer lines than the header's " + std::to_string(nv) + " vertices and " + std::to_string(nf) + " faces";
+  std::vector<Vec3> pos(nv);
+  std::vector<vcg::Color4b> col(nv, vcg::Color4b::LightGray);
+  bool anyColor = false;
+  for (long v = 0; v < nv; ++v) {
+    const auto& t = lines[next++];
+    double x, y, z;
+    if (t.size() < 3 || !num(t[0], x) || !num(t[1], y) || !num(t[2], z))
+      return "vertex " + std::to_string(v) + " has no three numeric coordinates";
+    pos[v] = Vec3(x, y, z);
+    const size_t c0 = 3 + (hasN ? 3 : 0);
+    if (hasC && t.size() >= c0 + 3) {
+      double c[4] = {0, 0, 0, 255};
+      const size_t nc = std::min<size_t>(4, t.size() - c0 - (hasST ? 2 : 0));
+      bool ok = nc >= 3;
+      for (size_t k = 0; k < nc && ok; ++k) ok = num(t[c0 + k], c[k]) && std::isfinite(c[k]);
+      if (ok) {
+        const bool unit = c[0] <= 1.0 && c[1] <= 1.0 && c[2] <= 1.0 && (nc < 4 || c[3] <= 1.0);
+        auto b = [&](double x) { return static_cast<unsigned char>(std::clamp(unit ? x * 255.0 : x, 0.0, 255.0)); };
+        col[v] = vcg::Color4b(b(c[0]), b(c[1]), b(c[2]), nc == 4 ? b(c[3]) : 255);
+        anyColor = true;
+      }
+    }
+  }
+  std::vector<std::array<int, 3>> tris;
+  for (long f = 0; f < nf; ++f) {
+    const auto& t = lines[next++];
+    long k = 0;
+    if (t.empty() || !integer(t[0], k) || k < 3 || t.size() < static_cast<size_t>(k) + 1)
+      return "face " + std::to_string(f) + " does not list at least 3 vertices";
+    std::vector<int> idx(k);
+    for (long i = 0; i < k; ++i) {
+      long v = -1;
+      if (!integer(t[1 + i], v) || v < 0 || v >= nv)
+        return "face " + std::to_string(f) + " refers to vertex " + t[1 + i] + " of " + std::to_string(nv);
+      idx[i] = static_cast<int>(v);
+    }
+    if (k > 3) mask |= io::Mask::IOM_BITPOLYGONAL;
+    for (long i = 1; i + 1 < k; ++i) tris.push_back({idx[0], idx[i], idx[i + 1]});
+  }
+  auto vi = vcg::tri::Allocator<Mesh>::AddVertices(mesh, pos.size());
+  for (size_t i = 0; i < pos.size(); ++i, ++vi) {
+    vi->P() = vcg::Point3d(pos[i].x(), pos[i].y(), pos[i].z());
+    vi->C() = col[i];
+  }
+  auto fi = vcg::tri::Allocator<Mesh>::AddFaces(mesh, tris.size());
+  for (const auto& t : tris) {
+    for (int k = 0; k < 3; ++k) fi->V(k) = &mesh.vert[t[k]];
+    ++fi;
+  }
+  mask |= io::Mask::IOM_VERTCOORD | io::Mask::IOM_FACEINDEX;
+  if (anyColor) mask |= io::Mask::IOM_VERTCOLOR;
+  return {};
+}
+
+// vcglib 2020.09's ImporterPLY trusts the file: a face element without a vertex_indices list,
+// a list count out of range or a vertex index outside the vertex element all read or write
+// out of bounds (found by fuzzing). The whole file is walked here first, header and body,
+// ASCII or binary. Returns an error text, empty when the file is safe to hand to vcglib.
+std::string checkPly(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::string line;
+  if (!std::getline(in, line) || line.rfind("ply", 0) != 0) return "no 'ply' magic line";
+  struct Property {
+    bool list = false;
+    int countSize = 0, itemSize = 0;  // bytes (binary); list count and item (or scalar) type
+    bool countSigned = false, itemSigned = false, itemFloat = false;
+    std::string name;
+  };
+  struct Element {
+    std::string name;
+    long long count = 0;
+    std::vector<Property> props;
+  };
+  auto typeSize = [](const std::string& t, bool& isSigned, bool& isFloat) {
+    isSigned = t == "char" || t == "short" || t == "int" || t == "int8" || t == "int16" || t == "int32";
+    isFloat = t == "float" || t == "double" || t == "float32" || t == "float64";
+    if (t == "char" || t == "uchar" || t == "int8" || t == "uint8") return 1;
+    if (t == "short" || t == "ushort" || t == "int16" || t == "uint16") return 2;
+    if (t == "int" || t == "uint" || t == "float" || t == "int32" || t == "uint32" || t == "float32") return 4;
+    if (t == "double" || t == "float64") return 8;
+    return 0;
+  };
+  std::vector<Element> elements;
+  std::string format;
+  bool ended = false;
+  for (int n = 0; !ended && std::getline(in, line) && n < 100000; ++n) {
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    for (unsigned char c : line)
+      if ((c < 32 && c != '\t') || c > 126) return "a header line holds binary data";
+    std::istringstream ls(line);
+    std::string word;
+    ls >> word;
+    if (word == "end_header") {
+      ended = true;
+    } else if (word == "format") {
+      ls >> format;
+    } else if (word == "element") {
+      Element e;
+      if (!(ls >> e.name >> e.count) || e.count < 0) return "an element line without a count";
+      elements.push_back(e);
+    } else if (word == "property") {
+      if (elements.empty()) return "a property before any element";
+      Property pr;
+      std::string type;
+      ls >> type;
+      bool f = false;
+      if (type == "list") {
+        std::string ct, it;
+        ls >> ct >> it >> pr.name;
+        pr.list = true;
+        pr.countSize = typeSize(ct, pr.countSigned, f);
+        pr.itemSize = typeSize(it, pr.itemSigned, pr.itemFloat);
+        if (!pr.countSize || f || !pr.itemSize) return "an unknown list type '" + ct + "'/'" + it + "'";
+      } else {
+        ls >> pr.name;
+        pr.itemSize = typeSize(type, pr.itemSigned, pr.itemFloat);
+        if (!pr.itemSize) return "an unknown property type '" + type + "'";
+      }
+      elements.back().props.push_back(pr);
+    }
+  }
+  if (!ended) return "no end_header line";
+  long long vertices = 0;
+  for (const Element& e : elements) {
+    if (e.name == "vertex") vertices = e.count;
+    if (e.name == "face" && e.count > 0) {
+      bool hasList = false;
+      for (const Property& pr : e.props) hasList = hasList || (pr.list && (pr.name == "vertex_indices" || pr.name == "vertex_index"));
+      if (!hasList) return "the face element has no vertex_indices list";
+    }
+  }
+  const bool ascii = format == "ascii";
+  const bool little = format == "binary_little_endian";
+  if (!ascii && !little && format != "binary_big_endian") return "an unknown format '" + format + "'";
+  // Read one value of a property's type as a double (integers exact below 2^53).
+  auto readValue = [&](int size, bool isSigned, bool isFloat, double& v) -> bool {
+    if (ascii) return static_cast<bool>(in >> v);
+    unsigned char b[8];
+    if (!in.read(reinterpret_cast<char*>(b), size)) return false;
+    if (!little) std::reverse(b, b + size);
+    if (isFloat) {
+      if (size == 4) { float x; std::memcpy(&x, b, 4); v = x; } else { double x; std::memcpy(&x, b, 8); v = x; }
+    } else {
+      uint64_t u = 0;
+      for (int i = size - 1; i >= 0; --i) u = (u << 8) | b[i];
+      if (isSigned && (b[size - 1] & 0x80)) v = static_cast<double>(static_cast<int64_t>(u | (~uint64_t(0) << (8 * size))));
+      else v = static_cast<double>(u);
+    }
+    return std::isfinite(v) || isFloat;
+  };
+  for (const Element& e : elements) {
+    const bool isFace = e.name == "face";
+    for (long long i = 0; i < e.count; ++i)
+      for (const Property& pr : e.props) {
+        double v = 0;
+        if (!pr.list) {
+          if (!readValue(pr.itemSize, pr.itemSigned, pr.itemFloat, v)) return "the file ends inside element '" + e.name + "'";
+          continue;
+        }
+        double count = 0;
+        if (!readValue(pr.countSize, pr.countSigned, false, count)) return "the file ends inside element '" + e.name + "'";
+        if (count < 0 || count != std::floor(count) || count > 256) return "a list of " + std::to_string(count) + " items";
+        const bool indices = isFace && (pr.name == "vertex_indices" || pr.name == "vertex_index");
+        if (indices && count < 3) return "face " + std::to_string(i) + " has fewer than 3 vertices";
+        for (int k = 0; k < static_cast<int>(count); ++k) {
+          if (!readValue(pr.itemSize, pr.itemSigned, pr.itemFloat, v)) return "the file ends inside element '" + e.name + "'";
+          if (indices && (v < 0 || v >= static_cast<double>(vertices) || v != std::floor(v)))
+            return "face " + std::to_string(i) + " refers to vertex " + std::to_string(v) + " of " +
+                   std::to_string(vertices);
+        }
+      }
+  }
+  return {};
+}
+
 }  // namespace
 
 LoadResult loadMesh(const std::string& path, Mesh& mesh) {
@@ -113,17 +338,36 @@ LoadResult loadMesh(const std::string& path, Mesh& mesh) {
   std::string what;
   namespace io = vcg::tri::io;
   if (ext == ".ply") {
-    err = io::ImporterPLY<Mesh>::Open(mesh, path.c_str(), mask);
+    what = checkPly(path);
+    if (what.empty()) err = io::ImporterPLY<Mesh>::Open(mesh, path.c_str(), mask);
     if (err != 0 && io::ImporterPLY<Mesh>::ErrorCritical(err)) what = io::ImporterPLY<Mesh>::ErrorMsg(err);
   } else if (ext == ".off") {
-    err = io::ImporterOFF<Mesh>::Open(mesh, path.c_str(), mask);
-    if (err != 0) what = io::ImporterOFF<Mesh>::ErrorMsg(err);
+    what = readOff(path, mesh, mask);
   } else if (ext == ".obj") {
     // vcglib 2020.09's ImporterOBJ drops every face that uses the file's first vertex
     // (SplitToken makes indices 0-based, then GoodObjIndex rejects index 0), so OBJ is read here.
     what = readObj(path, mesh, mask);
   } else if (ext == ".stl") {
-    err = io::ImporterSTL<Mesh>::Open(mesh, path.c_str(), mask);
+    // vcglib's binary/ASCII guess reads 4 bytes past what it read from the file, and its binary
+    // reader trusts the face count; decide here: binary only when the size matches exactly.
+    std::ifstream f(path, std::ios::binary | std::ios::ate);
+    const auto size = static_cast<long long>(f.tellg());
+    f.seekg(80);
+    uint32_t count = 0;
+    const bool haveCount = size >= 84 && f.read(reinterpret_cast<char*>(&count), 4);
+    if (haveCount && size == 84 + 50LL * count) {
+      err = io::ImporterSTL<Mesh>::OpenBinary(mesh, path.c_str(), mask);
+    } else {
+      f.seekg(0);
+      std::string word;
+      f >> word;
+      if (word != "solid") {
+        what = "neither a binary STL of the right size nor an ASCII STL starting with 'solid'";
+      } else {
+        mask |= io::Mask::IOM_VERTCOORD | io::Mask::IOM_FACEINDEX;
+        err = io::ImporterSTL<Mesh>::OpenAscii(mesh, path.c_str());
+      }
+    }
     if (err != 0) what = io::ImporterSTL<Mesh>::ErrorMsg(err);
   } else {
     r.status = Status::error(ErrorCode::UnsupportedFormat,
@@ -136,6 +380,24 @@ LoadResult loadMesh(const std::string& path, Mesh& mesh) {
     r.status = Status::error(ErrorCode::MalformedMesh,
                              "cannot parse mesh '" + path + "': " + what +
                                  " (the file is truncated or not a valid " + ext.substr(1) + " file)");
+    return r;
+  }
+  // Every face must refer to vertices of this mesh: vcglib's importers do not all check
+  // (found by fuzzing the OFF reader with malformed vertex lines).
+  if (what.empty() && !mesh.vert.empty()) {
+    const MeshVertex* first = &mesh.vert.front();
+    const MeshVertex* last = &mesh.vert.back();
+    for (const auto& f : mesh.face)
+      for (int k = 0; k < 3 && what.empty(); ++k)
+        if (f.cV(k) == nullptr || f.cV(k) < first || f.cV(k) > last) what = "a face refers to a vertex that does not exist";
+  } else if (what.empty() && !mesh.face.empty()) {
+    what = "faces without vertices";
+  }
+  if (!what.empty()) {
+    mesh.Clear();
+    r.status = Status::error(ErrorCode::MalformedMesh,
+                             "cannot parse mesh '" + path + "': " + what + " (the file is truncated or not a valid " +
+                                 ext.substr(1) + " file)");
     return r;
   }
   if (ext == ".stl") {
