@@ -163,18 +163,25 @@ std::vector<int> rotationAt(const RefinedMesh& m, const std::vector<int>& edgePa
   return out;
 }
 
-std::vector<int> inputFacePatch(const Layout& layout) {
-  const RefinedMesh& m = layout.mesh;
-  std::vector<int> patch(m.inputFaceCount(), -1);
+namespace {
+/// Per input face, the label of its largest refined sub-face.
+std::vector<int> labelOfInputFaces(const RefinedMesh& m, const std::vector<int>& label) {
+  std::vector<int> out(m.inputFaceCount(), -1);
+  if (label.empty()) return out;
   std::vector<double> best(m.inputFaceCount(), -1.0);
   for (int f = 0; f < m.faceCount(); ++f) {
     const auto v = m.faceVertices(f);
     const double a = (m.position(v[1]) - m.position(v[0])).cross(m.position(v[2]) - m.position(v[0])).norm();
     const int in = m.inputFace(f);
-    if (a > best[in]) best[in] = a, patch[in] = layout.facePatch[f];
+    if (a > best[in]) best[in] = a, out[in] = label[f];
   }
-  return patch;
+  return out;
 }
+}  // namespace
+
+std::vector<int> inputFacePatch(const Layout& layout) { return labelOfInputFaces(layout.mesh, layout.facePatch); }
+
+std::vector<int> inputFaceCluster(const Layout& layout) { return labelOfInputFaces(layout.mesh, layout.faceCluster); }
 
 Status assemblePatches(Layout& layout) {
   const RefinedMesh& m = layout.mesh;

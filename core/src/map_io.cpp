@@ -12,6 +12,14 @@
 
 namespace cbd {
 
+std::array<unsigned char, 3> stretchColor(double s) {
+  if (std::isnan(s)) return {128, 128, 128};
+  const double t = std::clamp(std::log2(std::max(s, 1e-9)), -1.0, 1.0);
+  const double r = t < 0 ? 1.0 + t : 1.0, g = 1.0 - std::abs(t), b = t > 0 ? 1.0 - t : 1.0;
+  auto c = [](double x) { return static_cast<unsigned char>(std::lround(255 * x)); };
+  return {c(r), c(g), c(b)};
+}
+
 void buildMappedMesh(const Mesh& from, const std::vector<Vec3>& image, const std::vector<FacePoint>& points,
                      const Mesh& onto, const TransferOptions& transfer, const std::vector<double>& faceStretch,
                      Mesh& out) {
@@ -43,13 +51,9 @@ void buildMappedMesh(const Mesh& from, const std::vector<Vec3>& image, const std
     }
   }
   for (size_t f = 0; f < out.face.size() && f < faceStretch.size(); ++f) {
-    const double s = faceStretch[f];
-    out.face[f].Q() = s;
-    // Blue (compressed) - white (1) - red (stretched), on a log scale saturating at x2.
-    const double t = std::clamp(std::log2(std::max(s, 1e-9)), -1.0, 1.0);
-    const double r = t < 0 ? 1.0 + t : 1.0, g = 1.0 - std::abs(t), b = t > 0 ? 1.0 - t : 1.0;
-    out.face[f].C() = vcg::Color4b(static_cast<unsigned char>(255 * r), static_cast<unsigned char>(255 * g),
-                                   static_cast<unsigned char>(255 * b), 255);
+    out.face[f].Q() = faceStretch[f];
+    const auto c = stretchColor(faceStretch[f]);
+    out.face[f].C() = vcg::Color4b(c[0], c[1], c[2], 255);
   }
 }
 

@@ -308,6 +308,31 @@ std::string checkPly(const std::string& path) {
   return {};
 }
 
+// The facets of an ASCII STL after its 'solid' word: `vertex x y z` triples, three per facet.
+std::string readAsciiStl(std::istream& in, Mesh& mesh) {
+  std::vector<Vec3> corners;
+  std::string word;
+  while (in >> word) {
+    if (word != "vertex") continue;
+    std::string xs, ys, zs;
+    if (!(in >> xs >> ys >> zs)) return "a vertex line without three coordinates";
+    char* end[3];
+    const double x = std::strtod(xs.c_str(), &end[0]), y = std::strtod(ys.c_str(), &end[1]),
+                 z = std::strtod(zs.c_str(), &end[2]);
+    if (*end[0] || *end[1] || *end[2]) return "a vertex with a non-numeric coordinate";
+    corners.emplace_back(x, y, z);
+  }
+  if (corners.empty() || corners.size() % 3 != 0) return "the facets do not have three vertices each";
+  auto vi = vcg::tri::Allocator<Mesh>::AddVertices(mesh, corners.size());
+  auto fi = vcg::tri::Allocator<Mesh>::AddFaces(mesh, corners.size() / 3);
+  for (size_t i = 0; i < corners.size(); ++i, ++vi) {
+    vi->P() = vcg::Point3d(corners[i].x(), corners[i].y(), corners[i].z());
+    fi->V(static_cast<int>(i % 3)) = &*vi;
+    if (i % 3 == 2) ++fi;
+  }
+  return {};
+}
+
 }  // namespace
 
 LoadResult loadMesh(const std::string& path, Mesh& mesh) {
@@ -348,8 +373,9 @@ LoadResult loadMesh(const std::string& path, Mesh& mesh) {
     // (SplitToken makes indices 0-based, then GoodObjIndex rejects index 0), so OBJ is read here.
     what = readObj(path, mesh, mask);
   } else if (ext == ".stl") {
-    // vcglib's binary/ASCII guess reads 4 bytes past what it read from the file, and its binary
-    // reader trusts the face count; decide here: binary only when the size matches exactly.
+    // vcglib's binary/ASCII guess reads 4 bytes past what it read from the file, its binary
+    // reader trusts the face count and its ASCII reader can loop forever (all found by fuzzing):
+    // binary through vcglib only when the size matches the count exactly, ASCII read here.
     std::ifstream f(path, std::ios::binary | std::ios::ate);
     const auto size = static_cast<long long>(f.tellg());
     f.seekg(80);
@@ -364,8 +390,9 @@ LoadResult loadMesh(const std::string& path, Mesh& mesh) {
       if (word != "solid") {
         what = "neither a binary STL of the right size nor an ASCII STL starting with 'solid'";
       } else {
+        // ASCII STL is read here: vcglib's OpenAscii loops forever on some malformed files.
+        what = readAsciiStl(f, mesh);
         mask |= io::Mask::IOM_VERTCOORD | io::Mask::IOM_FACEINDEX;
-        err = io::ImporterSTL<Mesh>::OpenAscii(mesh, path.c_str());
       }
     }
     if (err != 0) what = io::ImporterSTL<Mesh>::ErrorMsg(err);

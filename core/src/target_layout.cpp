@@ -209,14 +209,6 @@ TargetLayoutResult buildTargetLayout(const Layout& src, const IndexedMesh& targe
   std::string lastReason;
   auto tryEmbed = [&](int e) -> int {  // 1 embedded, 0 not now, -1 internal error (r.status set)
     const LayoutEdge& se = src.edges[e];
-    const Sector sa = sectorAt(e, se.a, 0), sb = sectorAt(e, se.b, 0);
-    refreshTargetAnchorOf();
-    const RegionMap rm = analyzeRegions(L.mesh, tracer.edgePath(), tgtAnchorOf);
-    const int region = rm.faceRegion[sa.faces.front()];
-    if (rm.faceRegion[sb.faces.front()] != region) {
-      lastReason = "its two sectors lie in different regions of the partial target layout";
-      return 0;
-    }
     // The partial source layout after this edge: what the target must reproduce.
     setSourceEdge(e, e);
     const std::vector<RegionSignature> want = regionSignatures(src.mesh, srcPartial, srcAnchorOf, src.edges);
@@ -227,6 +219,15 @@ TargetLayoutResult buildTargetLayout(const Layout& src, const IndexedMesh& targe
     std::vector<int> frontier{se.a, se.b};
     ring[se.a] = ring[se.b] = 0;
     for (int attempt = 0;; ++attempt) {
+      // Sectors and regions afresh: an undone attempt leaves its splits (new faces) behind.
+      const Sector sa = sectorAt(e, se.a, 0), sb = sectorAt(e, se.b, 0);
+      refreshTargetAnchorOf();
+      const RegionMap rm = analyzeRegions(L.mesh, tracer.edgePath(), tgtAnchorOf);
+      const int region = rm.faceRegion[sa.faces.front()];
+      if (rm.faceRegion[sb.faces.front()] != region) {
+        lastReason = "its two sectors lie in different regions of the partial target layout";
+        return 0;
+      }
       const bool wholeRegion = frontier.empty();
       queryLabel.assign(L.mesh.faceCount(), 0);
       for (int f = 0; f < L.mesh.faceCount(); ++f) {

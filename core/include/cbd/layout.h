@@ -133,6 +133,9 @@ std::vector<int> rotationAt(const RefinedMesh& mesh, const std::vector<int>& edg
 /// largest part of it (faces crossed by a path are split among patches in `layout.mesh`).
 std::vector<int> inputFacePatch(const Layout& layout);
 
+/// The Voronoi cluster of every input face, the same way (all -1 when the layout has none).
+std::vector<int> inputFaceCluster(const Layout& layout);
+
 /// Assemble `layout.patches`, `layout.rotation` and `layout.facePatch` from the paths cut into
 /// `layout.mesh` (`layout.edgePath` set). InternalError if a region is not a triangle.
 Status assemblePatches(Layout& layout);

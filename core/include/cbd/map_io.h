@@ -4,6 +4,7 @@
 /// other surface's attributes transferred through the map), the per-vertex correspondence as
 /// text, and a morph sequence.
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -11,6 +12,10 @@
 #include "cbd/parameterization.h"
 
 namespace cbd {
+
+/// The colour of a stretch value: blue (compressed, <= 1/2) - white (1) - red (stretched, >= 2),
+/// on a log scale; grey for NaN. Used for mst.ply and by the plugin.
+std::array<unsigned char, 3> stretchColor(double stretch);
 
 /// Which attributes of the mesh the image lies on are transferred to the mapped mesh.
 struct TransferOptions {

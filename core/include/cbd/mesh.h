@@ -57,9 +57,10 @@ struct LoadResult {
   bool hasVertexTexCoord = false;
 };
 
-/// Load PLY, OFF (also COFF with colours), OBJ or STL: PLY and STL through vcglib's importers
-/// after a full check of the file (vcglib trusts counts and indices), OFF and OBJ by our own
-/// readers (vcglib 2020.09's misread malformed and even some valid files). Errors: FileNotFound, UnsupportedFormat, MalformedMesh, EmptyMesh. Polygonal faces are
+/// Load PLY, OFF (also COFF with colours), OBJ or STL: PLY and binary STL through vcglib's
+/// importers after a full check of the file (vcglib trusts counts and indices), OFF, OBJ and
+/// ASCII STL by our own readers (vcglib 2020.09's misread malformed and even some valid files,
+/// found by fuzzing). Errors: FileNotFound, UnsupportedFormat, MalformedMesh, EmptyMesh. Polygonal faces are
 /// triangulated by the importer and reported in `hadPolygons` (validation turns it into
 /// NotTriangles). Unreferenced vertices are kept (indices stay those of the file).
 LoadResult loadMesh(const std::string& path, Mesh& mesh);
