@@ -1,12 +1,15 @@
 #pragma once
 /// @file cbd_pipeline.h
-/// The one place where the MeshLab plugin hands validated input to the cbd algorithm stages.
+/// The one place where the MeshLab plugin hands validated input to the cbd algorithm stages
+/// (cbd::buildLayouts / cbd::crossParameterize) and turns their results into MeshLab layers.
 /// Everything before this call (layer conversion, anchor gathering, validation, logging) is in
-/// filter_cbd.cpp; swap the body of `runPipeline` (cbd_pipeline.cpp) for the real pipeline.
+/// filter_cbd.cpp.
 
 #include <functional>
 #include <string>
+#include <vector>
 
+#include "cbd/layout.h"
 #include "cbd/mesh.h"
 #include "cbd/status.h"
 #include "cbd/validate_input.h"
@@ -15,7 +18,6 @@
 
 class MeshDocument;
 class MeshModel;
-
 
 namespace cbdplugin {
 
@@ -31,27 +33,40 @@ struct PipelineOptions {
   int minEdgeNodes = 3;          ///< "Minimum edge nodes"
   bool adaptiveEdgeNodes = true; ///< "Adaptive edge nodes"
   int smoothingIterations = 0;   ///< "Smoothing iterations" (Cross-parameterize only; 0 otherwise)
+  bool colourByCluster = false;  ///< "Colour by Voronoi cluster" (Voronoi common base domain only)
+  bool colourByPatch = true;     ///< "Colour layers by patch" (Cross-parameterize; always on for Voronoi)
+  bool addMstLayer = true;       ///< "Add M_st layer" (Cross-parameterize)
+  bool addPathLayers = true;     ///< "Add path layers" (Cross-parameterize; always on for Voronoi)
 };
 
-/// Everything the pipeline gets. The input layers must not be modified: results go into new
-/// layers of `document` (e.g. `document.addNewMesh("", label, false)`).
+/// Where the compact cbd::IndexedMesh elements are in the layer: `vertex[i]` / `face[i]` is the
+/// position in `cm.vert` / `cm.face` of compact vertex / face i (deleted elements skipped).
+struct LayerIndex {
+  std::vector<int> vertex;
+  std::vector<int> face;
+};
+
+/// Everything the pipeline gets. On failure nothing is modified; on success the input layers
+/// get per-face colours (MM_FACECOLOR) and new layers are appended to `document`.
 struct PipelineRequest {
   FilterKind filter;
   std::string filterName;            ///< e.g. "Voronoi common base domain"
   const cbd::IndexedMesh& source;    ///< compact copy of the source layer (double precision)
   const cbd::IndexedMesh& target;
+  const LayerIndex& sourceIndex;
+  const LayerIndex& targetIndex;
   const cbd::InputReport& report;    ///< validateInput's result; report.status is ok here
   PipelineOptions options;
   MeshDocument& document;
-  const MeshModel& sourceLayer;
-  const MeshModel& targetLayer;
+  MeshModel& sourceLayer;
+  MeshModel& targetLayer;
   std::function<void(const std::string&)> log;  ///< one line into MeshLab's log
 };
 
-/// Run the algorithm stages. Return success, or an error whose message is the complete text the
-/// caller puts into MeshLab's error dialog and log verbatim (start it with "cbd: <filter name>").
-/// May throw: the caller catches everything.
-/// @param[in] cb MeshLab's progress callback (may be null); call as cb(percent, "text").
+/// Run the algorithm stages and write the results into the document. Return success, or an
+/// error whose message is the complete text the caller puts into MeshLab's error dialog and log
+/// verbatim (it starts with "cbd: <filter name>: "). May throw: the caller catches everything.
+/// @param[in] cb MeshLab's progress callback (may be null); called as cb(percent, "text").
 cbd::Status runPipeline(const PipelineRequest& request, vcg::CallBackPos* cb);
 
 }  // namespace cbdplugin

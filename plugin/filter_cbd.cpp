@@ -35,6 +35,10 @@ const char* const kMethod = "Method";
 const char* const kMinEdgeNodes = "MinEdgeNodes";
 const char* const kAdaptiveEdgeNodes = "AdaptiveEdgeNodes";
 const char* const kSmoothingIterations = "SmoothingIterations";
+const char* const kColourByCluster = "ColourByCluster";
+const char* const kAddMstLayer = "AddMstLayer";
+const char* const kColourByPatch = "ColourByPatch";
+const char* const kAddPathLayers = "AddPathLayers";
 
 /// An input problem found by the adapter; applyFilter turns it into the error message.
 struct AdapterError {
@@ -95,8 +99,9 @@ bool boolParam(const RichParameterList& par, const char* name) {
 std::string layerName(const MeshModel& m) { return "layer " + quoted(m.label()); }
 
 /// Compact double-precision copy of a layer: deleted vertices and faces skipped, vertex indices
-/// renumbered in order. The layer is only read.
-cbd::IndexedMesh toIndexed(const MeshModel& layer, int& deletedVertices) {
+/// renumbered in order; `where` tells where each compact element is in the layer. The layer is
+/// only read.
+cbd::IndexedMesh toIndexed(const MeshModel& layer, int& deletedVertices, cbdplugin::LayerIndex& where) {
   const CMeshO& cm = layer.cm;
   cbd::IndexedMesh out;
   std::vector<int> index(cm.vert.size(), -1);
@@ -109,6 +114,7 @@ cbd::IndexedMesh toIndexed(const MeshModel& layer, int& deletedVertices) {
       continue;
     }
     index[i] = static_cast<int>(out.positions.size());
+    where.vertex.push_back(static_cast<int>(i));
     out.positions.emplace_back(double(v.cP()[0]), double(v.cP()[1]), double(v.cP()[2]));
   }
   out.faces.reserve(static_cast<size_t>(std::max(cm.fn, 0)));
@@ -127,6 +133,7 @@ cbd::IndexedMesh toIndexed(const MeshModel& layer, int& deletedVertices) {
       t[static_cast<size_t>(k)] = index[static_cast<size_t>(i)];
     }
     out.faces.push_back(t);
+    where.face.push_back(static_cast<int>(f));
   }
   return out;
 }
@@ -260,32 +267,49 @@ QString FilterCbdPlugin::filterInfo(FilterIDType filter) const {
       "(at least 3). The anchors of a layer are, in this order: the given anchors file (MeshLab "
       "PickPoints <i>.pp</i>, <i>index [x y z]</i> lines, or <i>name x y z</i> lines); else the "
       "points picked with <i>Edit &gt; PickPoints</i> on the layer; else the file "
-      "<i>&lt;mesh name&gt;_picked_points.pp</i> next to the mesh file. The input layers are "
-      "never modified.<br><br>See: <i>Tsz-Ho Kwok, Yunbo Zhang, Charlie C. L. Wang</i><br>"
+      "<i>&lt;mesh name&gt;_picked_points.pp</i> next to the mesh file. The input layers "
+      "are changed only on success (their face colours), never their geometry.<br><br>See: <i>Tsz-Ho Kwok, Yunbo Zhang, Charlie C. L. Wang</i><br>"
       "<b>\"Constructing common base domains by cues from Voronoi diagram\"</b><br>"
       "Graphical Models 74(4), 2012.");
   switch (filter) {
     case FP_VORONOI_BASE_DOMAIN:
       return tr("Builds a common base domain of two meshes: corresponding patch layouts on both "
                 "surfaces whose nodes are the anchors, traced from cues of the geodesic Voronoi "
-                "diagram of the anchors (or by greedy shortest paths).") + common;
+                "diagram of the anchors (or by greedy shortest paths).<br><br>Result: both layers "
+                "coloured per face by patch (corresponding patches get the same colour) or, "
+                "optionally, by Voronoi cluster; a new layer per surface with the layout paths as "
+                "an edge mesh (one colour per path); the log lists the anchors, edges, patches, "
+                "multiple linkages and timings.") + common;
     case FP_CROSS_PARAMETERIZE:
       return tr("Builds a common base domain of two meshes and, through it, a cross-parameterization: "
                 "a bijective map between the two surfaces that sends each anchor to its "
-                "corresponding anchor.") + common;
+                "corresponding anchor.<br><br>Result: the layer <i>&lt;source&gt; onto "
+                "&lt;target&gt;</i> (M<sub>st</sub>: the source's triangles with every vertex at its "
+                "image on the target; face quality = L2 stretch, coloured blue - white - red; "
+                "vertex colour transferred from the target when it has vertex colours); both "
+                "layers coloured per face by patch; optionally the layout paths as edge meshes. "
+                "The log lists the distortion (E<sub>ang</sub>, E<sub>L2</sub> and its inverse, "
+                "flipped and degenerate triangles) and timings.") + common;
   }
   return QString();
 }
 
+// Remeshing only: the menu Filters > Remeshing, Simplification and Reconstruction. (MeshCreation
+// would also list the filters under "Create New Mesh Layer" and reset the view; MeshLab sets up
+// the rendering of new layers without it. FaceColoring would list them under "Color Creation".)
+// The face colours of the existing layers are announced by postCondition.
 MeshFilterInterface::FilterClass FilterCbdPlugin::getClass(QAction*) { return MeshFilterInterface::Remeshing; }
 
 MeshFilterInterface::FILTER_ARITY FilterCbdPlugin::filterArity(QAction*) const { return FIXED; }
 
 int FilterCbdPlugin::getRequirements(QAction*) { return MeshModel::MM_NONE; }
 
-int FilterCbdPlugin::getPreConditions(QAction*) const { return MeshModel::MM_NONE; }
+// The current layer must have faces (MeshLab greys the filter out otherwise).
+int FilterCbdPlugin::getPreConditions(QAction*) const { return MeshModel::MM_FACENUMBER; }
 
-int FilterCbdPlugin::postCondition(QAction*) const { return MeshModel::MM_NONE; }
+// What changes on the existing layers: per-face colour (the new layers are set up by MeshLab as
+// new meshes). MeshLab re-uploads these attributes and switches the rendering to face colour.
+int FilterCbdPlugin::postCondition(QAction*) const { return MeshModel::MM_FACECOLOR; }
 
 void FilterCbdPlugin::initParameterSet(QAction* action, MeshDocument& md, RichParameterList& par) {
   const int id = ID(action);
@@ -319,9 +343,26 @@ void FilterCbdPlugin::initParameterSet(QAction* action, MeshDocument& md, RichPa
   par.addParam(RichBool(kAdaptiveEdgeNodes, true, "Adaptive edge nodes",
                         "Add edge nodes where the edge is long or curved (else every edge gets the "
                         "minimum)."));
-  if (id == FP_CROSS_PARAMETERIZE)
+  if (id == FP_VORONOI_BASE_DOMAIN)
+    par.addParam(RichBool(kColourByCluster, false, "Colour by Voronoi cluster",
+                          "Colour the two layers per face by the Voronoi cluster of the anchors "
+                          "(corresponding clusters get the same colour) instead of by patch. "
+                          "Voronoi method only."));
+  if (id == FP_CROSS_PARAMETERIZE) {
     par.addParam(RichInt(kSmoothingIterations, 0, "Smoothing iterations",
                          "Smoothing passes over the cross-parameterization (0: none)."));
+    par.addParam(RichBool(kAddMstLayer, true, "Add M_st layer",
+                          "Add the layer '<source> onto <target>': the source's triangles with every "
+                          "vertex moved to its image on the target. Face quality = L2 stretch "
+                          "(coloured blue - white - red); vertex colour transferred from the target "
+                          "when it has vertex colours."));
+    par.addParam(RichBool(kColourByPatch, true, "Colour layers by patch",
+                          "Colour the source and target layers per face by patch of the common base "
+                          "domain (corresponding patches get the same colour)."));
+    par.addParam(RichBool(kAddPathLayers, false, "Add path layers",
+                          "Also add one edge-mesh layer per surface with the paths of the common "
+                          "base domain."));
+  }
 }
 
 void FilterCbdPlugin::logLine(const std::string& text) { Log(GLLogStream::FILTER, text); }
@@ -378,6 +419,14 @@ bool FilterCbdPlugin::apply(int filter, MeshDocument& md, const RichParameterLis
     if (options.smoothingIterations < 0)
       throwError(cbd::ErrorCode::InvalidArgument,
             "'Smoothing iterations' must be >= 0, got " + std::to_string(options.smoothingIterations));
+    options.addMstLayer = boolParam(par, kAddMstLayer);
+    options.colourByPatch = boolParam(par, kColourByPatch);
+    options.addPathLayers = boolParam(par, kAddPathLayers);
+  } else {
+    options.colourByCluster = boolParam(par, kColourByCluster);
+    options.colourByPatch = !options.colourByCluster;
+    options.addPathLayers = true;
+    options.addMstLayer = false;
   }
   if (sourceLayer == targetLayer)
     logLine(tag + "warning: source and target are the same " + layerName(*sourceLayer));
@@ -385,8 +434,9 @@ bool FilterCbdPlugin::apply(int filter, MeshDocument& md, const RichParameterLis
   // Layers and anchors (read only).
   progress(0, "cbd: reading the layers");
   int sourceDeleted = 0, targetDeleted = 0;
-  const cbd::IndexedMesh source = toIndexed(*sourceLayer, sourceDeleted);
-  const cbd::IndexedMesh target = toIndexed(*targetLayer, targetDeleted);
+  cbdplugin::LayerIndex sourceIndex, targetIndex;
+  const cbd::IndexedMesh source = toIndexed(*sourceLayer, sourceDeleted, sourceIndex);
+  const cbd::IndexedMesh target = toIndexed(*targetLayer, targetDeleted, targetIndex);
   const GatheredAnchors sourceAnchors = gatherAnchors(*sourceLayer, sourcePath, "source");
   const GatheredAnchors targetAnchors = gatherAnchors(*targetLayer, targetPath, "target");
   for (const auto& [layer, anchors, deleted] :
@@ -423,8 +473,8 @@ bool FilterCbdPlugin::apply(int filter, MeshDocument& md, const RichParameterLis
 
   // The algorithm stages.
   progress(20, "cbd: building the common base domain");
-  const cbdplugin::PipelineRequest request{kindOf(filter), name,     source,       target,
-                                           report,         options,  md,           *sourceLayer,
+  const cbdplugin::PipelineRequest request{kindOf(filter), name,         source,       target,      sourceIndex,
+                                           targetIndex,    report,       options,      md,          *sourceLayer,
                                            *targetLayer,   [this](const std::string& s) { logLine(s); }};
   const cbd::Status status = cbdplugin::runPipeline(request, cb);
   if (!status.ok()) return fail(status.message);

@@ -3,8 +3,9 @@
 /// MeshLab 2020.09 filter plugin of cbd: "Voronoi common base domain" and "Cross-parameterize"
 /// (Filters > Remeshing, Simplification and Reconstruction). A thin adapter: it copies two
 /// layers into cbd::IndexedMesh, gathers their anchors (PickPoints attribute or .pp files),
-/// runs cbd::validateInput, logs a report and hands over to runPipeline (cbd_pipeline.h).
-/// It never modifies the input layers and never lets an exception reach MeshLab.
+/// runs cbd::validateInput, logs a report and hands over to runPipeline (cbd_pipeline.h), which
+/// colours the input layers per face and adds result layers, only once every stage succeeded.
+/// On failure nothing is modified; no exception ever reaches MeshLab.
 
 #include <string>
 

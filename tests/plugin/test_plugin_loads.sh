@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Checks that Debian's MeshLab 2020.09 loads the cbd plugin and runs its filters, through a
-# no-root prefix (scripts/meshlab_prefix.sh) and meshlabserver under xvfb-run:
+# no-root prefix (scripts/meshlab_prefix.sh) and meshlabserver on a private Xvfb (meshlab_scripts/headless.sh):
 #   1. `meshlabserver -d FILE` (dump of every registered filter) lists both cbd filters;
 #   2. a .mlx calling "Voronoi common base domain" on two subdivided octahedra (anchors from the
 #      <mesh>_picked_points.pp files next to the meshes) logs the cbd report;
@@ -21,7 +21,9 @@ info() { printf '[%s] %s\n' "$NAME" "$*"; }
 BUILD_DIR="$(cd "$1" 2>/dev/null && pwd)" || fail "build folder '$1' does not exist"
 PLUGIN_SO="$BUILD_DIR/plugin/libfilter_cbd.so"
 [ -f "$PLUGIN_SO" ] || fail "$PLUGIN_SO not found (build the filter_cbd target first)"
-command -v xvfb-run >/dev/null || fail "xvfb-run not found (apt-get install xvfb xauth)"
+command -v Xvfb >/dev/null || fail "Xvfb not found (apt-get install xvfb)"
+# shellcheck source=../../meshlab_scripts/headless.sh
+. "$ROOT/meshlab_scripts/headless.sh"   # cbd_headless: like xvfb-run -a
 command -v sha256sum >/dev/null || fail "sha256sum not found"
 
 TMP="$(mktemp -d "${TMPDIR:-/tmp}/cbd_plugin_test.XXXXXX")" || fail "cannot create a temporary folder"
@@ -122,7 +124,7 @@ write_mlx() {  # file filter source_anchors target_anchors [smoothing]
 # run_server TAG ARGS... : runs meshlabserver (cwd = RUNS), output in RUNS/TAG.{log,out}; sets RC.
 run_server() {
   local tag="$1"; shift
-  (cd "$RUNS" && timeout 300 xvfb-run -a "$SERVER" "$@" -l "$RUNS/$tag.log" >"$RUNS/$tag.out" 2>&1)
+  (cd "$RUNS" && cbd_headless timeout 300 "$SERVER" "$@" -l "$RUNS/$tag.log" >"$RUNS/$tag.out" 2>&1)
   RC=$?
   [ -f "$RUNS/$tag.log" ] || touch "$RUNS/$tag.log"
   cat "$RUNS/$tag.out" "$RUNS/$tag.log" >"$RUNS/$tag.all"
