@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <map>
 #include <set>
+#include <cstdint>
 #include <tuple>
 
 namespace cbd {
@@ -43,77 +44,152 @@ std::vector<int> cornerWedge(const RefinedMesh& m, const std::vector<int>& edgeP
   return faces;
 }
 
+namespace {
+
+/// Scratch marks for describing regions (stamped, so nothing is cleared between regions).
+struct RegionScratch {
+  std::vector<uint32_t> vertexMark, halfedgeMark;
+  uint32_t stamp = 0;
+  void fit(const RefinedMesh& m) {
+    vertexMark.resize(m.vertexCount(), 0);
+    halfedgeMark.resize(m.halfedgeCount(), 0);
+    ++stamp;
+  }
+};
+
+bool onPath(const RefinedMesh& m, const std::vector<int>& edgePath, int v) {
+  const int start = m.outgoing(v);
+  int h = start;
+  do {
+    if (edgePath[RefinedMesh::edgeOf(h)] >= 0) return true;
+    h = m.rotateCCW(h);
+  } while (h != start);
+  return false;
+}
+
+/// Everything about one region, given its faces: Euler characteristic of the region cut open
+/// along its paths (V - E + F, one wedge corner per boundary halfedge), boundary loops with
+/// their anchor corners and sides, anchors inside.
+Region describeRegion(const RefinedMesh& m, const std::vector<int>& edgePath, const std::vector<int>& anchorOf,
+                      const std::vector<int>& faces, RegionScratch& sc) {
+  sc.fit(m);
+  Region reg;
+  reg.faces = static_cast<int>(faces.size());
+  long long V = 0, E = 0;
+  std::vector<int> boundary;
+  for (int f : faces)
+    for (int k = 0, h = m.faceHalfedge(f); k < 3; ++k, h = m.next(h)) {
+      if (edgePath[RefinedMesh::edgeOf(h)] >= 0) {
+        boundary.push_back(h);
+        ++E, ++V;
+      } else if (h < RefinedMesh::twin(h)) {
+        ++E;  // an interior edge: both its halfedges are in the region, count it once
+      }
+      const int v = m.from(h);
+      if (sc.vertexMark[v] == sc.stamp) continue;
+      sc.vertexMark[v] = sc.stamp;
+      if (onPath(m, edgePath, v)) continue;
+      ++V;
+      if (v < static_cast<int>(anchorOf.size()) && anchorOf[v] >= 0) reg.interiorAnchors.push_back(anchorOf[v]);
+    }
+  reg.eulerCharacteristic = static_cast<int>(V - E + reg.faces);
+  for (int h0 : boundary) {
+    if (sc.halfedgeMark[h0] == sc.stamp) continue;
+    RegionLoop loop;
+    int h = h0;
+    do {
+      sc.halfedgeMark[h] = sc.stamp;
+      loop.halfedges.push_back(h);
+      h = nextBoundary(m, edgePath, h);
+    } while (h != h0 && sc.halfedgeMark[h] != sc.stamp);
+    for (int x : loop.halfedges) {
+      const int v = m.from(x);
+      if (v < static_cast<int>(anchorOf.size()) && anchorOf[v] >= 0) {
+        loop.corners.push_back(anchorOf[v]);
+        loop.cornerHalfedge.push_back(x);
+        loop.sides.push_back(edgePath[RefinedMesh::edgeOf(x)]);
+      }
+    }
+    reg.loops.push_back(std::move(loop));
+  }
+  return reg;
+}
+
+RegionSignature signatureOf(const Region& r, const std::vector<LayoutEdge>& edges) {
+  RegionSignature s;
+  s.euler = r.eulerCharacteristic;
+  s.inside = r.interiorAnchors;
+  std::sort(s.inside.begin(), s.inside.end());
+  for (const RegionLoop& l : r.loops) {
+    std::vector<std::pair<int, int>> ls;
+    for (size_t k = 0; k < l.sides.size(); ++k) ls.emplace_back(l.sides[k], edges[l.sides[k]].a == l.corners[k] ? 1 : 0);
+    std::rotate(ls.begin(), std::min_element(ls.begin(), ls.end()), ls.end());
+    s.loops.push_back(ls);
+  }
+  std::sort(s.loops.begin(), s.loops.end());
+  return s;
+}
+
+}  // namespace
+
+std::vector<int> regionFaces(const RefinedMesh& m, const std::vector<int>& edgePath, int f0) {
+  std::vector<int> faces{f0}, stack{f0};
+  std::vector<char> in(m.faceCount(), 0);
+  in[f0] = 1;
+  while (!stack.empty()) {
+    const int f = stack.back();
+    stack.pop_back();
+    for (int k = 0, h = m.faceHalfedge(f); k < 3; ++k, h = m.next(h)) {
+      if (edgePath[RefinedMesh::edgeOf(h)] >= 0) continue;
+      const int g = m.face(RefinedMesh::twin(h));
+      if (!in[g]) in[g] = 1, faces.push_back(g), stack.push_back(g);
+    }
+  }
+  return faces;
+}
+
 RegionMap analyzeRegions(const RefinedMesh& m, const std::vector<int>& edgePath,
                          const std::vector<int>& anchorOfVertex) {
   RegionMap r;
   const int nf = m.faceCount();
   r.faceRegion.assign(nf, -1);
+  std::vector<std::vector<int>> members;
   std::vector<int> stack;
   for (int f0 = 0; f0 < nf; ++f0) {
     if (r.faceRegion[f0] >= 0) continue;
-    const int id = static_cast<int>(r.regions.size());
-    r.regions.emplace_back();
+    const int id = static_cast<int>(members.size());
+    members.emplace_back(1, f0);
     r.faceRegion[f0] = id;
     stack.assign(1, f0);
     while (!stack.empty()) {
       const int f = stack.back();
       stack.pop_back();
-      ++r.regions[id].faces;
       for (int k = 0, h = m.faceHalfedge(f); k < 3; ++k, h = m.next(h)) {
         if (edgePath[RefinedMesh::edgeOf(h)] >= 0) continue;
         const int g = m.face(RefinedMesh::twin(h));
-        if (r.faceRegion[g] < 0) r.faceRegion[g] = id, stack.push_back(g);
+        if (r.faceRegion[g] < 0) r.faceRegion[g] = id, members[id].push_back(g), stack.push_back(g);
       }
     }
   }
-  // Euler characteristic of each region cut open: V - E + F.
-  std::vector<long long> V(r.regions.size(), 0), E(r.regions.size(), 0);
-  for (int e = 0; e < m.edgeCount(); ++e) {
-    if (edgePath[e] < 0) {
-      ++E[r.faceRegion[m.face(2 * e)]];
-    } else {
-      for (int s = 0; s < 2; ++s) {
-        const int reg = r.faceRegion[m.face(2 * e + s)];
-        ++E[reg];
-        ++V[reg];  // one wedge corner per boundary halfedge
-      }
-    }
-  }
-  std::vector<int> pathsAt(m.vertexCount(), 0);
-  for (int e = 0; e < m.edgeCount(); ++e)
-    if (edgePath[e] >= 0) ++pathsAt[m.to(2 * e)], ++pathsAt[m.to(2 * e + 1)];
-  for (int v = 0; v < m.vertexCount(); ++v) {
-    const int h = m.outgoing(v);
-    if (h < 0 || pathsAt[v] > 0) continue;
-    const int reg = r.faceRegion[m.face(h)];
-    ++V[reg];
-    if (v < static_cast<int>(anchorOfVertex.size()) && anchorOfVertex[v] >= 0)
-      r.regions[reg].interiorAnchors.push_back(anchorOfVertex[v]);
-  }
-  for (size_t i = 0; i < r.regions.size(); ++i)
-    r.regions[i].eulerCharacteristic = static_cast<int>(V[i] - E[i] + r.regions[i].faces);
-  // Boundary loops.
-  std::vector<char> seen(m.halfedgeCount(), 0);
-  for (int h0 = 0; h0 < m.halfedgeCount(); ++h0) {
-    if (seen[h0] || edgePath[RefinedMesh::edgeOf(h0)] < 0) continue;
-    RegionLoop loop;
-    int h = h0;
-    do {
-      seen[h] = 1;
-      loop.halfedges.push_back(h);
-      h = nextBoundary(m, edgePath, h);
-    } while (h != h0 && !seen[h]);
-    for (int x : loop.halfedges) {
-      const int v = m.from(x);
-      if (v < static_cast<int>(anchorOfVertex.size()) && anchorOfVertex[v] >= 0) {
-        loop.corners.push_back(anchorOfVertex[v]);
-        loop.cornerHalfedge.push_back(x);
-        loop.sides.push_back(edgePath[RefinedMesh::edgeOf(x)]);
-      }
-    }
-    r.regions[r.faceRegion[m.face(h0)]].loops.push_back(std::move(loop));
-  }
+  RegionScratch sc;
+  for (const auto& faces : members) r.regions.push_back(describeRegion(m, edgePath, anchorOfVertex, faces, sc));
   return r;
+}
+
+std::vector<RegionSignature> regionSignaturesAt(const RefinedMesh& m, const std::vector<int>& edgePath,
+                                                const std::vector<int>& anchorOf, const std::vector<LayoutEdge>& edges,
+                                                const std::vector<int>& seedFaces) {
+  std::vector<RegionSignature> out;
+  std::vector<char> done(m.faceCount(), 0);
+  RegionScratch sc;
+  for (int f : seedFaces) {
+    if (done[f]) continue;
+    const std::vector<int> faces = regionFaces(m, edgePath, f);
+    for (int g : faces) done[g] = 1;
+    out.push_back(signatureOf(describeRegion(m, edgePath, anchorOf, faces, sc), edges));
+  }
+  std::sort(out.begin(), out.end());
+  return out;
 }
 
 bool RegionSignature::operator<(const RegionSignature& o) const {
@@ -125,22 +201,9 @@ bool RegionSignature::operator==(const RegionSignature& o) const {
 
 std::vector<RegionSignature> regionSignatures(const RefinedMesh& mesh, const std::vector<int>& edgePath,
                                               const std::vector<int>& anchorOf, const std::vector<LayoutEdge>& edges) {
-  RegionMap rm = analyzeRegions(mesh, edgePath, anchorOf);
+  const RegionMap rm = analyzeRegions(mesh, edgePath, anchorOf);
   std::vector<RegionSignature> out;
-  for (const Region& r : rm.regions) {
-    RegionSignature s;
-    s.euler = r.eulerCharacteristic;
-    s.inside = r.interiorAnchors;
-    std::sort(s.inside.begin(), s.inside.end());
-    for (const RegionLoop& l : r.loops) {
-      std::vector<std::pair<int, int>> ls;
-      for (size_t k = 0; k < l.sides.size(); ++k) ls.emplace_back(l.sides[k], edges[l.sides[k]].a == l.corners[k] ? 1 : 0);
-      std::rotate(ls.begin(), std::min_element(ls.begin(), ls.end()), ls.end());
-      s.loops.push_back(ls);
-    }
-    std::sort(s.loops.begin(), s.loops.end());
-    out.push_back(std::move(s));
-  }
+  for (const Region& r : rm.regions) out.push_back(signatureOf(r, edges));
   std::sort(out.begin(), out.end());
   return out;
 }

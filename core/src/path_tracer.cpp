@@ -79,6 +79,11 @@ void PathTracer::computeEdgeNodes(int e) {
   edgeNodes_[e] = n;
   slotBase_[e] = static_cast<int>(slotEdge_.size());
   slotEdge_.insert(slotEdge_.end(), n, e);
+  const Vec3 &a = mesh_.position(mesh_.from(2 * e)), &b = mesh_.position(mesh_.to(2 * e));
+  for (int j = 0; j < n; ++j) {
+    const double t = (j + 1.0) / (n + 1.0);
+    slotPos_.push_back((1.0 - t) * a + t * b);
+  }
 }
 
 void PathTracer::onSplit() {
@@ -93,13 +98,9 @@ void PathTracer::onSplit() {
   for (int x : {e, r.edgeContinued, r.edgeDiagonalA, r.edgeDiagonalB}) computeEdgeNodes(x);
 }
 
-Vec3 PathTracer::nodePosition(int64_t node) const {
+const Vec3& PathTracer::nodePosition(int64_t node) const {
   if (node >= 0) return mesh_.position(static_cast<int>(node));
-  const int s = static_cast<int>(-node - 1);
-  const int e = slotEdge_[s];
-  const int j = s - slotBase_[e];
-  const double t = (j + 1.0) / (edgeNodes_[e] + 1.0);
-  return (1.0 - t) * mesh_.position(mesh_.from(2 * e)) + t * mesh_.position(mesh_.to(2 * e));
+  return slotPos_[static_cast<size_t>(-node - 1)];
 }
 
 TracedPath PathTracer::trace(const PathQuery& q) {
@@ -136,19 +137,24 @@ TracedPath PathTracer::trace(const PathQuery& q) {
     const size_t s = static_cast<size_t>(-n - 1);
     return stampS_[s] == st ? distS_[s] : kInf;
   };
-  using Item = std::pair<double, int64_t>;
+  // A single goal: A* with the straight-line distance to it, a consistent lower bound on
+  // the remaining path (arcs are straight segments), so the first path found is shortest.
+  const bool astar = !q.distancesOnly && q.goals.size() == 1;
+  const Vec3 goalPos = astar ? mesh_.position(q.goals[0].vertex) : Vec3::Zero();
+  auto heuristic = [&](int64_t n) { return astar ? (nodePosition(n) - goalPos).norm() : 0.0; };
+  using Item = std::pair<double, int64_t>;  // (distance + heuristic, node)
   std::priority_queue<Item, std::vector<Item>, std::greater<Item>> pq;
   auto relax = [&](int64_t from, int64_t to, double d) {
     if (to >= 0) {
       if (stampV_[to] != st || d < distV_[to]) {
         stampV_[to] = st, distV_[to] = d, parentV_[to] = from;
-        pq.push({d, to});
+        pq.push({d + heuristic(to), to});
       }
     } else {
       const size_t s = static_cast<size_t>(-to - 1);
       if (stampS_[s] != st || d < distS_[s]) {
         stampS_[s] = st, distS_[s] = d, parentS_[s] = from;
-        pq.push({d, to});
+        pq.push({d + heuristic(to), to});
       }
     }
   };
@@ -194,7 +200,7 @@ TracedPath PathTracer::trace(const PathQuery& q) {
   std::vector<char> goalSettled(q.goals.size(), 0);
   while (!pq.empty()) {
     // Plain variables, not structured bindings: lambdas below capture them (C++17).
-    const double d = pq.top().first;
+    const double key = pq.top().first;
     const int64_t u = pq.top().second;
     pq.pop();
     if (u >= kGoalBase) {
@@ -204,7 +210,8 @@ TracedPath PathTracer::trace(const PathQuery& q) {
       if (settledGoals == q.goals.size()) break;
       continue;
     }
-    if (d > dist(u)) continue;
+    const double d = dist(u);
+    if (key > d + heuristic(u)) continue;  // a stale entry
     const Vec3 pu = u == q.source ? srcPos : nodePosition(u);
     const bool atSource = (u == q.source);
     auto cross = [&](int64_t w, int f) { offer(u, w, d + (nodePosition(w) - pu).norm(), f, -1); };

@@ -135,10 +135,10 @@ TargetLayoutResult buildTargetLayout(const Layout& src, const IndexedMesh& targe
   std::vector<char> embedded(ne, 0);
   std::vector<int> srcAnchorOf(src.mesh.vertexCount(), -1), tgtAnchorOf;
   for (int i = 0; i < na; ++i) srcAnchorOf[src.anchorVertices[i]] = i;
-  auto refreshTargetAnchorOf = [&] {
-    tgtAnchorOf.assign(L.mesh.vertexCount(), -1);
-    for (int i = 0; i < na; ++i) tgtAnchorOf[anchors[i]] = i;
-  };
+  // Splits only add vertices, and those are never anchors.
+  tgtAnchorOf.assign(L.mesh.vertexCount(), -1);
+  for (int i = 0; i < na; ++i) tgtAnchorOf[anchors[i]] = i;
+  auto refreshTargetAnchorOf = [&] { tgtAnchorOf.resize(L.mesh.vertexCount(), -1); };
   auto setSourceEdge = [&](int e, int value) {
     const auto& chain = src.edges[e].vertices;
     for (size_t k = 0; k + 1 < chain.size(); ++k)
@@ -205,13 +205,21 @@ TargetLayoutResult buildTargetLayout(const Layout& src, const IndexedMesh& targe
     clusterNeighbours[c.i].push_back(c.j);
     clusterNeighbours[c.j].push_back(c.i);
   }
-  std::vector<int> queryLabel;
+  std::vector<int> queryLabel;  // per face: queryStamp = allowed, -queryStamp = in the region
+  int queryStamp = 0;
   std::string lastReason;
   auto tryEmbed = [&](int e) -> int {  // 1 embedded, 0 not now, -1 internal error (r.status set)
     const LayoutEdge& se = src.edges[e];
-    // The partial source layout after this edge: what the target must reproduce.
+    // The regions around this edge in the partial source layout once it is added: what the
+    // target must reproduce around its path (the other regions already agree).
     setSourceEdge(e, e);
-    const std::vector<RegionSignature> want = regionSignatures(src.mesh, srcPartial, srcAnchorOf, src.edges);
+    std::vector<int> seeds;
+    for (size_t k = 0; k + 1 < se.vertices.size(); ++k) {
+      const int h = src.mesh.findHalfedge(se.vertices[k], se.vertices[k + 1]);
+      seeds.push_back(src.mesh.face(h));
+      seeds.push_back(src.mesh.face(RefinedMesh::twin(h)));
+    }
+    const std::vector<RegionSignature> want = regionSignaturesAt(src.mesh, srcPartial, srcAnchorOf, src.edges, seeds);
     setSourceEdge(e, -1);
     // Search rings of target clusters around the two anchors' own: 0 = their two clusters
     // (the paper's local search), k = clusters within k cuts of them, then the whole region.
@@ -219,21 +227,20 @@ TargetLayoutResult buildTargetLayout(const Layout& src, const IndexedMesh& targe
     std::vector<int> frontier{se.a, se.b};
     ring[se.a] = ring[se.b] = 0;
     for (int attempt = 0;; ++attempt) {
-      // Sectors and regions afresh: an undone attempt leaves its splits (new faces) behind.
+      // Sectors and the region afresh: an undone attempt leaves its splits (new faces) behind.
       const Sector sa = sectorAt(e, se.a, 0), sb = sectorAt(e, se.b, 0);
       refreshTargetAnchorOf();
-      const RegionMap rm = analyzeRegions(L.mesh, tracer.edgePath(), tgtAnchorOf);
-      const int region = rm.faceRegion[sa.faces.front()];
-      if (rm.faceRegion[sb.faces.front()] != region) {
+      const std::vector<int> region = regionFaces(L.mesh, tracer.edgePath(), sa.faces.front());
+      ++queryStamp;
+      queryLabel.resize(L.mesh.faceCount(), 0);
+      for (int f : region) queryLabel[f] = -queryStamp;  // in the region
+      if (queryLabel[sb.faces.front()] != -queryStamp) {
         lastReason = "its two sectors lie in different regions of the partial target layout";
         return 0;
       }
       const bool wholeRegion = frontier.empty();
-      queryLabel.assign(L.mesh.faceCount(), 0);
-      for (int f = 0; f < L.mesh.faceCount(); ++f) {
-        const int c = tracer.faceLabel()[f];
-        if (rm.faceRegion[f] == region && (wholeRegion || ring[c] >= 0)) queryLabel[f] = 1;
-      }
+      for (int f : region)
+        if (wholeRegion || ring[tracer.faceLabel()[f]] >= 0) queryLabel[f] = queryStamp;
       std::vector<int> next;
       for (int c : frontier)
         for (int d : clusterNeighbours[c])
@@ -243,7 +250,7 @@ TargetLayoutResult buildTargetLayout(const Layout& src, const IndexedMesh& targe
       q.source = anchors[se.a];
       q.sourceFaces = sa.faces;
       q.goals.push_back({anchors[se.b], sb.faces, 0});
-      q.filter = {&queryLabel, 1, 1};
+      q.filter = {&queryLabel, queryStamp, queryStamp};
       TracedPath tp = tracer.trace(q);
       if (!tp.found) {
         lastReason = attempt == 0 ? "no path inside the two target clusters" : "no path inside its region";
@@ -256,7 +263,13 @@ TargetLayoutResult buildTargetLayout(const Layout& src, const IndexedMesh& targe
         return -1;
       }
       refreshTargetAnchorOf();
-      if (regionSignatures(L.mesh, tracer.edgePath(), tgtAnchorOf, src.edges) == want) {
+      std::vector<int> around;
+      for (size_t k = 0; k + 1 < chain.size(); ++k) {
+        const int h = L.mesh.findHalfedge(chain[k], chain[k + 1]);
+        around.push_back(L.mesh.face(h));
+        around.push_back(L.mesh.face(RefinedMesh::twin(h)));
+      }
+      if (regionSignaturesAt(L.mesh, tracer.edgePath(), tgtAnchorOf, src.edges, around) == want) {
         L.edges[e].vertices = std::move(chain);
         L.edges[e].length = tp.length;
         (attempt == 0 ? r.embeddedInClusters : r.embeddedInRegion)++;

@@ -123,6 +123,15 @@ std::vector<RegionSignature> regionSignatures(const RefinedMesh& mesh, const std
                                               const std::vector<int>& anchorOfVertex,
                                               const std::vector<LayoutEdge>& edges);
 
+/// Signatures of only the regions holding the given faces (local flood fills), sorted: after
+/// one path is added, comparing these around it on two surfaces is as good as comparing all.
+std::vector<RegionSignature> regionSignaturesAt(const RefinedMesh& mesh, const std::vector<int>& edgePath,
+                                                const std::vector<int>& anchorOfVertex,
+                                                const std::vector<LayoutEdge>& edges, const std::vector<int>& seedFaces);
+
+/// The faces of the region holding face f (flood fill across edges that are on no path).
+std::vector<int> regionFaces(const RefinedMesh& mesh, const std::vector<int>& edgePath, int f);
+
 /// The halfedge by which a path (vertex chain) leaves its end vertex v.
 int leavingHalfedge(const RefinedMesh& mesh, const std::vector<int>& chain, int v);
 

@@ -108,7 +108,7 @@ class PathTracer {
   /// Total nodes (vertices + edge nodes) of the current graph.
   int64_t nodeCount() const;
   /// Position of a node as encoded in TracedPath::nodes.
-  Vec3 nodePosition(int64_t node) const;
+  const Vec3& nodePosition(int64_t node) const;
 
  private:
   void growEdges();
@@ -123,6 +123,7 @@ class PathTracer {
   std::vector<int> faceLabel_, edgeLabel_, edgePath_;
   std::vector<int> edgeNodes_, slotBase_;
   std::vector<int> slotEdge_;
+  std::vector<Vec3> slotPos_;  ///< position of every edge node, fixed when it is created
   // Dijkstra scratch (stamped so nothing is cleared between searches).
   std::vector<double> distV_, distS_;
   std::vector<int64_t> parentV_, parentS_;
