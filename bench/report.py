@@ -18,8 +18,8 @@ def rows(path):
         return list(csv.DictReader(f))
 
 table = rows(os.path.join(out, 'table.csv'))
-scal_a = rows(os.path.join(out, 'scaling_anchors', 'scaling.csv'))
-scal_s = rows(os.path.join(out, 'scaling_size', 'scaling.csv'))
+scal_a = [r for r in rows(os.path.join(out, 'scaling_anchors', 'scaling.csv')) if r['experiment'] == 'anchors']
+scal_s = [r for r in rows(os.path.join(out, 'scaling_size', 'scaling.csv')) if r['experiment'] == 'size']
 methods = ['greedy', 'voronoi-E1', 'voronoi-C']
 
 def fit(points):

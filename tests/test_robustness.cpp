@@ -65,3 +65,20 @@ TEST(Determinism, SameInputSameOutputAcrossRunsAndThreadCounts) {
     EXPECT_EQ(r->metrics.eL2, a.metrics.eL2);
   }
 }
+
+TEST(Stress, AnchorsCrowdedInOneSmallRegion) {
+  // Ten anchors packed within a small cap of the sphere, the rest of the surface empty: the
+  // method must still give valid layouts and a bijective map, or a typed error.
+  const stress::SyntheticPair pair = stress::makePair(0);
+  std::vector<int> sa;
+  for (int v = 0; v < pair.source.vertexCount() && sa.size() < 10; ++v)
+    if ((pair.source.positions[v] - Vec3(0, 0, 1)).norm() < 0.35) sa.push_back(v);
+  ASSERT_EQ(sa.size(), 10u);
+  const stress::Outcome o = stress::run(pair, sa);
+  if (o.ok) {
+    EXPECT_TRUE(o.invariantsHold);
+  } else {
+    EXPECT_EQ(o.code, ErrorCode::LayoutFailed) << o.message;
+  }
+  RecordProperty("crowded_status", errorCodeName(o.code));
+}

@@ -208,6 +208,14 @@ PY
       bad "cbd map bull -> cow ($method): exit $rc, $res $(cat map.err)"
     fi
   done
+  # Determinism: the same run again gives byte-identical files.
+  "$CBD" map --source "$MESHES/bull.off" --source-anchors "$EXAMPLES/bull_picked_points.pp" \
+    --target "$MESHES/cow.off" --target-anchors "$EXAMPLES/cow_picked_points.pp" --out map_again --morph 3 >/dev/null 2>&1
+  same=1
+  for f in mst.ply mts.ply correspondence.txt morph_001.ply source/layout.ply target/paths.ply; do
+    cmp -s "map_voronoi/$f" "map_again/$f" || same=0
+  done
+  [ "$same" = 1 ] && ok "cbd map twice: byte-identical outputs" || bad "cbd map twice: outputs differ"
   "$CBD" map --source "$MESHES/bull.off" --source-anchors "$EXAMPLES/bull_picked_points.pp" \
     --target "$MESHES/cow.off" --target-anchors "$EXAMPLES/cow_picked_points.pp" --out /proc/nope >/dev/null 2>&1; rc=$?
   [ "$rc" = "$(code_of output_error)" ] && ok "cbd map into an unwritable folder: exit $rc" || bad "unwritable map folder: exit $rc"
