@@ -16,12 +16,6 @@ using namespace cbd;
 namespace fx = cbd::fixtures;
 
 namespace {
-int nearest(const IndexedMesh& m, const Vec3& p) {
-  int best = 0;
-  for (int v = 1; v < m.vertexCount(); ++v)
-    if ((m.positions[v] - p).squaredNorm() < (m.positions[best] - p).squaredNorm()) best = v;
-  return best;
-}
 
 void expectValidOrTypedFailure(const GreedyLayoutResult& g, int chi, int anchors) {
   if (!g.status) {
@@ -49,7 +43,7 @@ TEST(GreedyLayout, SphereToBumpyEllipsoid) {
     SCOPED_TRACE(n);
     const std::vector<int> sa = farthestPointSampling(s, n);
     std::vector<int> ta;
-    for (int v : sa) ta.push_back(nearest(tu, s.positions[v]));
+    for (int v : sa) ta.push_back(fx::nearestVertex(tu, s.positions[v]));
     const GreedyLayoutResult g = buildGreedyLayout(s, sa, t, ta);
     // On a sphere with well-spread anchors the greedy method completes.
     ASSERT_TRUE(g.status.ok()) << g.status.message;
@@ -64,7 +58,7 @@ TEST(GreedyLayout, TorusWithSixAnchorsSucceedsOrFailsCleanly) {
   std::vector<int> sa;
   for (int k = 0; k < 6; ++k) {
     const double u = 2 * M_PI * k / 6, v = (k % 2) ? M_PI : 0.0;
-    sa.push_back(nearest(s, Vec3((2 + 0.7 * std::cos(v)) * std::cos(u), (2 + 0.7 * std::cos(v)) * std::sin(u), 0.7 * std::sin(v))));
+    sa.push_back(fx::nearestVertex(s, Vec3((2 + 0.7 * std::cos(v)) * std::cos(u), (2 + 0.7 * std::cos(v)) * std::sin(u), 0.7 * std::sin(v))));
   }
   const GreedyLayoutResult g = buildGreedyLayout(s, sa, s, sa);
   RecordProperty("greedy_torus_status", errorCodeName(g.status.code));

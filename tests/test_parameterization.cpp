@@ -12,12 +12,6 @@ using namespace cbd;
 namespace fx = cbd::fixtures;
 
 namespace {
-int nearest(const IndexedMesh& m, const Vec3& p) {
-  int best = 0;
-  for (int v = 1; v < m.vertexCount(); ++v)
-    if ((m.positions[v] - p).squaredNorm() < (m.positions[best] - p).squaredNorm()) best = v;
-  return best;
-}
 double signedArea(const std::array<Vec2, 3>& t) {
   return 0.5 * ((t[1] - t[0]).x() * (t[2] - t[0]).y() - (t[1] - t[0]).y() * (t[2] - t[0]).x());
 }
@@ -80,7 +74,7 @@ TEST(CrossMap, SphereToEllipsoidRoundTripAndGroundTruth) {
   for (auto& p : t.positions) p = deform(p);
   const std::vector<int> sa = farthestPointSampling(s, 20);
   std::vector<int> ta;
-  for (int v : sa) ta.push_back(nearest(tu, s.positions[v]));
+  for (int v : sa) ta.push_back(fx::nearestVertex(tu, s.positions[v]));
   for (LayoutMethod method : {LayoutMethod::Voronoi, LayoutMethod::Greedy}) {
     SCOPED_TRACE(layoutMethodName(method));
     CrossParameterizationOptions o;
@@ -142,7 +136,7 @@ TEST(MapSmoothing, NeverAddsFlipsKeepsAnchorsAndStaysOnTheTarget) {
   for (auto& p : t.positions) p = Vec3(2.5 * p.x(), p.y(), 0.6 * p.z()) * (1.0 + 0.2 * std::sin(6 * p.y()));
   const std::vector<int> sa = farthestPointSampling(s, 12);
   std::vector<int> ta;
-  for (int v : sa) ta.push_back(nearest(tu, s.positions[v]));
+  for (int v : sa) ta.push_back(fx::nearestVertex(tu, s.positions[v]));
   CrossParameterizationOptions o;
   const CrossParameterizationResult plain = crossParameterize(s, sa, t, ta, 2, o);
   ASSERT_TRUE(plain.status.ok()) << plain.status.message;

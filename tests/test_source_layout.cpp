@@ -15,12 +15,6 @@ namespace fx = cbd::fixtures;
 
 namespace {
 
-int nearestVertex(const IndexedMesh& m, const Vec3& p) {
-  int best = 0;
-  for (int v = 1; v < m.vertexCount(); ++v)
-    if ((m.positions[v] - p).squaredNorm() < (m.positions[best] - p).squaredNorm()) best = v;
-  return best;
-}
 
 // Farthest-point sampling of n vertices (deterministic, starting at vertex 0).
 std::vector<int> farthestPoints(const IndexedMesh& m, int n) {
@@ -98,7 +92,7 @@ TEST(Voronoi, SixAxisAnchorsGiveTwelveCuts) {
   const IndexedMesh m = fx::icosphere(4);
   std::vector<int> anchors;
   for (const Vec3& d : {Vec3(1, 0, 0), Vec3(-1, 0, 0), Vec3(0, 1, 0), Vec3(0, -1, 0), Vec3(0, 0, 1), Vec3(0, 0, -1)})
-    anchors.push_back(nearestVertex(m, d));
+    anchors.push_back(fx::nearestVertex(m, d));
   RefinedMesh rm(m);
   const VoronoiResult v = computeVoronoiClusters(rm, anchors);
   ASSERT_TRUE(v.status.ok());
@@ -117,7 +111,7 @@ TEST(SourceLayout, OctahedronOnASphere) {
   const IndexedMesh m = fx::icosphere(3);
   std::vector<int> anchors;
   for (const Vec3& d : {Vec3(1, 0, 0), Vec3(-1, 0, 0), Vec3(0, 1, 0), Vec3(0, -1, 0), Vec3(0, 0, 1), Vec3(0, 0, -1)})
-    anchors.push_back(nearestVertex(m, d));
+    anchors.push_back(fx::nearestVertex(m, d));
   const SourceLayoutResult r = buildSourceLayout(m, anchors);
   expectValid(r, m, 6);
   EXPECT_EQ(r.layout.edges.size(), 12u);
@@ -144,7 +138,7 @@ TEST(SourceLayout, TorusWithSixAnchorsNeedsMultipleLinkages) {
   for (int k = 0; k < 6; ++k) {
     const double u = 2 * M_PI * k / 6;
     const double v = (k % 2) ? M_PI : 0.0;  // alternately outside and inside the tube
-    anchors.push_back(nearestVertex(m, Vec3((2 + 0.7 * std::cos(v)) * std::cos(u), (2 + 0.7 * std::cos(v)) * std::sin(u), 0)));
+    anchors.push_back(fx::nearestVertex(m, Vec3((2 + 0.7 * std::cos(v)) * std::cos(u), (2 + 0.7 * std::cos(v)) * std::sin(u), 0)));
   }
   const SourceLayoutResult r = buildSourceLayout(m, anchors);
   expectValid(r, m, 6);
@@ -184,7 +178,7 @@ TEST(SourceLayout, AdaptiveEdgeNodesStraightenPathsOnABadMesh) {
   std::vector<int> anchors;
   for (int k = 0; k < 10; ++k) {
     const double th = 0.35 + 2.4 * k / 9.0, ph = 2.4 * k;
-    anchors.push_back(nearestVertex(m, Vec3(std::sin(th) * std::cos(ph), std::sin(th) * std::sin(ph), std::cos(th))));
+    anchors.push_back(fx::nearestVertex(m, Vec3(std::sin(th) * std::cos(ph), std::sin(th) * std::sin(ph), std::cos(th))));
   }
   auto excess = [&](const SourceLayoutOptions& o) {
     const SourceLayoutResult r = buildSourceLayout(m, anchors, o);

@@ -16,12 +16,6 @@ namespace fx = cbd::fixtures;
 
 namespace {
 
-int nearest(const IndexedMesh& m, const Vec3& p) {
-  int best = 0;
-  for (int v = 1; v < m.vertexCount(); ++v)
-    if ((m.positions[v] - p).squaredNorm() < (m.positions[best] - p).squaredNorm()) best = v;
-  return best;
-}
 
 struct PairRun {
   SourceLayoutResult source;
@@ -32,7 +26,7 @@ struct PairRun {
 // (the known correspondence), the target mesh is `t` (tUndeformed deformed).
 PairRun run(const IndexedMesh& s, const std::vector<int>& sa, const IndexedMesh& tUndeformed, const IndexedMesh& t) {
   std::vector<int> ta;
-  for (int v : sa) ta.push_back(nearest(tUndeformed, s.positions[v]));
+  for (int v : sa) ta.push_back(fx::nearestVertex(tUndeformed, s.positions[v]));
   PairRun r;
   r.source = buildSourceLayout(s, sa);
   EXPECT_TRUE(r.source.status.ok()) << r.source.status.message;
@@ -87,7 +81,7 @@ TEST(TargetLayout, TwistedBumpyTorusWithSixAnchors) {
   std::vector<int> sa;
   for (int k = 0; k < 6; ++k) {
     const double u = 2 * M_PI * k / 6, v = (k % 2) ? M_PI : 0.0;
-    sa.push_back(nearest(s, Vec3((R + rr * std::cos(v)) * std::cos(u), (R + rr * std::cos(v)) * std::sin(u), rr * std::sin(v))));
+    sa.push_back(fx::nearestVertex(s, Vec3((R + rr * std::cos(v)) * std::cos(u), (R + rr * std::cos(v)) * std::sin(u), rr * std::sin(v))));
   }
   const PairRun r = run(s, sa, tu, t);
   EXPECT_GE(r.source.layout.multipleLinkages(), 1);
@@ -141,7 +135,7 @@ TEST(TargetLayout, TwistedTubeDoesNotSwirl) {
   for (auto& p : t.positions) p = twist(p, +1);
   std::vector<int> sa;
   for (const Vec3& p : {Vec3(1, 0, 0), Vec3(-1, 0, 0), Vec3(0, 1, h), Vec3(0, -1, h), Vec3(0, 0, 0), Vec3(0, 0, h)})
-    sa.push_back(nearest(s, p));
+    sa.push_back(fx::nearestVertex(s, p));
   const PairRun r = run(s, sa, tu, t);
   if (!r.target.status) return;
   double sum = 0;

@@ -34,34 +34,21 @@ SourceLayoutResult buildSourceLayout(const IndexedMesh& input, const std::vector
     r.status = Status::error(ErrorCode::TooFewAnchors, "a layout needs at least 3 anchors");
     return r;
   }
-  for (int i = 0; i < na; ++i) {
-    if (anchors[i] < 0 || anchors[i] >= input.vertexCount()) {
-      r.status = Status::error(ErrorCode::InvalidArgument, "anchor " + std::to_string(i) + " is not a vertex");
-      return r;
-    }
-    for (int j = 0; j < i; ++j)
-      if (anchors[i] == anchors[j]) {
-        r.status = Status::error(ErrorCode::AnchorsShareVertex, "anchors " + std::to_string(j) + " and " +
-                                                                    std::to_string(i) + " are on the same vertex");
-        return r;
-      }
+  if (Status st = checkAnchorVertices(input, anchors, "source"); !st) {
+    r.status = st;
+    return r;
   }
   auto t0 = std::chrono::steady_clock::now();
   Layout& L = r.layout;
-  L.mesh = RefinedMesh(input);
-  L.anchorVertices = anchors;
-  separateAnchors(L.mesh, anchors);
-  VoronoiResult vor = computeVoronoiClusters(L.mesh, anchors);
-  if (!vor.status) {
-    r.status = vor.status;
+  std::vector<int> clusters;
+  if (Status st = startVoronoiLayout(input, anchors, L, clusters, r.cuts); !st) {
+    r.status = st;
     return r;
   }
   r.voronoiSeconds = seconds(t0);
   t0 = std::chrono::steady_clock::now();
-  r.cuts = extractCuts(L.mesh, vor.faceCluster, na);
-
   PathTracer tracer(L.mesh, options.edgeNodes);
-  tracer.faceLabel() = vor.faceCluster;
+  tracer.faceLabel() = std::move(clusters);
   tracer.edgeLabel() = r.cuts.edgeCut;
   for (int v : anchors) tracer.setAnchor(v, true);
   PathSet paths;

@@ -81,27 +81,21 @@ TargetLayoutResult buildTargetLayout(const Layout& src, const IndexedMesh& targe
                                                              " anchors, the source layout " + std::to_string(na));
     return r;
   }
-  for (int i = 0; i < na; ++i)
-    if (anchors[i] < 0 || anchors[i] >= target.vertexCount()) {
-      r.status = Status::error(ErrorCode::InvalidArgument, "target anchor " + std::to_string(i) + " is not a vertex");
-      return r;
-    }
+  if (Status st = checkAnchorVertices(target, anchors, "target"); !st) {
+    r.status = st;
+    return r;
+  }
   auto t0 = std::chrono::steady_clock::now();
   Layout& L = r.layout;
-  L.mesh = RefinedMesh(target);
-  L.anchorVertices = anchors;
-  separateAnchors(L.mesh, anchors);
-  VoronoiResult vor = computeVoronoiClusters(L.mesh, anchors);
-  if (!vor.status) {
-    r.status = vor.status;
+  std::vector<int> clusters;
+  if (Status st = startVoronoiLayout(target, anchors, L, clusters, r.cuts); !st) {
+    r.status = st;
     return r;
   }
   r.voronoiSeconds = seconds(t0);
   t0 = std::chrono::steady_clock::now();
-  r.cuts = extractCuts(L.mesh, vor.faceCluster, na);
-
   PathTracer tracer(L.mesh, options.edgeNodes);
-  tracer.faceLabel() = vor.faceCluster;
+  tracer.faceLabel() = std::move(clusters);
   for (int v : anchors) tracer.setAnchor(v, true);
 
   const int ne = static_cast<int>(src.edges.size());

@@ -1,5 +1,7 @@
 #include "cbd/voronoi.h"
 
+#include "cbd/layout.h"
+
 #include <algorithm>
 #include <limits>
 #include <map>
@@ -8,6 +10,32 @@
 #include <tuple>
 
 namespace cbd {
+
+Status startVoronoiLayout(const IndexedMesh& input, const std::vector<int>& anchors, Layout& layout,
+                          std::vector<int>& faceCluster, CutsResult& cuts) {
+  layout.mesh = RefinedMesh(input);
+  layout.anchorVertices = anchors;
+  separateAnchors(layout.mesh, anchors);
+  VoronoiResult vor = computeVoronoiClusters(layout.mesh, anchors);
+  if (!vor.status) return vor.status;
+  cuts = extractCuts(layout.mesh, vor.faceCluster, static_cast<int>(anchors.size()));
+  faceCluster = std::move(vor.faceCluster);
+  return Status::success();
+}
+
+Status checkAnchorVertices(const IndexedMesh& mesh, const std::vector<int>& anchors, const std::string& what) {
+  std::vector<int> owner(mesh.vertexCount(), -1);
+  for (size_t i = 0; i < anchors.size(); ++i) {
+    const int v = anchors[i];
+    if (v < 0 || v >= mesh.vertexCount())
+      return Status::error(ErrorCode::InvalidArgument, what + " anchor " + std::to_string(i) + " is not a vertex");
+    if (owner[v] >= 0)
+      return Status::error(ErrorCode::AnchorsShareVertex, what + " anchors " + std::to_string(owner[v]) + " and " +
+                                                              std::to_string(i) + " are on the same vertex");
+    owner[v] = static_cast<int>(i);
+  }
+  return Status::success();
+}
 
 int separateAnchors(RefinedMesh& mesh, const std::vector<int>& anchorVertices) {
   std::vector<char> isAnchor(mesh.vertexCount(), 0);

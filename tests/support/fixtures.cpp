@@ -211,6 +211,13 @@ IndexedMesh twoComponents() {
   return m;
 }
 
+int nearestVertex(const IndexedMesh& m, const Vec3& p) {
+  int best = 0;
+  for (int v = 1; v < m.vertexCount(); ++v)
+    if ((m.positions[v] - p).squaredNorm() < (m.positions[best] - p).squaredNorm()) best = v;
+  return best;
+}
+
 bool writeOff(const std::string& path, const IndexedMesh& mesh) {
   std::ofstream out(path);
   out.precision(17);

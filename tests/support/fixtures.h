@@ -44,6 +44,9 @@ IndexedMesh twoComponents();
 /// A regular tetrahedron.
 IndexedMesh tetrahedron(const Vec3& offset = Vec3::Zero(), double scale = 1.0);
 
+/// The vertex nearest to p (brute force; for tests).
+int nearestVertex(const IndexedMesh& mesh, const Vec3& p);
+
 /// Write a mesh as OFF (for CLI tests).
 bool writeOff(const std::string& path, const IndexedMesh& mesh);
 

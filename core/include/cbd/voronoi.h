@@ -5,6 +5,7 @@
 /// maximal contiguous chains of edges along which two clusters touch (a pair of clusters may
 /// share several cuts, Observation 2).
 
+#include <string>
 #include <vector>
 
 #include "cbd/refined_mesh.h"
@@ -49,6 +50,18 @@ struct CutsResult {
   /// Number of cuts of each pair, by pair key i * anchorCount + j (i < j).
   int cutsOfPair(int i, int j, int anchorCount) const;
 };
+
+struct Layout;
+
+/// The common start of the Voronoi method on one surface: `layout.mesh` becomes the input with
+/// edges between anchors split, `layout.anchorVertices` the anchors; then the clusters (per
+/// face of layout.mesh) and their cuts. Errors of computeVoronoiClusters.
+Status startVoronoiLayout(const IndexedMesh& input, const std::vector<int>& anchors, Layout& layout,
+                          std::vector<int>& faceCluster, CutsResult& cuts);
+
+/// Check anchor vertices of a mesh: in range and distinct (InvalidArgument, AnchorsShareVertex).
+/// `what` names the surface in messages.
+Status checkAnchorVertices(const IndexedMesh& mesh, const std::vector<int>& anchors, const std::string& what);
 
 /// Cuts of a face clustering (maximal chains of same-pair edges joined at shared vertices).
 CutsResult extractCuts(const RefinedMesh& mesh, const std::vector<int>& faceCluster, int anchorCount);
