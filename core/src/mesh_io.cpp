@@ -26,6 +26,21 @@ std::string lowerExtension(const std::string& path) {
   return ext;
 }
 
+// Vertices (with colours) and triangles read by our own readers into the vcglib mesh.
+void fill(Mesh& mesh, const std::vector<Vec3>& pos, const std::vector<vcg::Color4b>& col,
+          const std::vector<std::array<int, 3>>& tris) {
+  auto vi = vcg::tri::Allocator<Mesh>::AddVertices(mesh, pos.size());
+  for (size_t i = 0; i < pos.size(); ++i, ++vi) {
+    vi->P() = vcg::Point3d(pos[i].x(), pos[i].y(), pos[i].z());
+    vi->C() = col[i];
+  }
+  auto fi = vcg::tri::Allocator<Mesh>::AddFaces(mesh, tris.size());
+  for (const auto& t : tris) {
+    for (int k = 0; k < 3; ++k) fi->V(k) = &mesh.vert[t[k]];
+    ++fi;
+  }
+}
+
 // Wavefront OBJ: `v x y z [r g b]` and `f a[/t[/n]] b c ...` (1-based or negative indices);
 // polygons are fan-triangulated and flagged. Returns an error text, empty on success.
 std::string readObj(const std::string& path, Mesh& mesh, int& mask) {
@@ -71,16 +86,7 @@ std::string readObj(const std::string& path, Mesh& mesh, int& mask) {
     }
   }
   if (in.bad()) return "read error";
-  auto vi = vcg::tri::Allocator<Mesh>::AddVertices(mesh, pos.size());
-  for (size_t i = 0; i < pos.size(); ++i, ++vi) {
-    vi->P() = vcg::Point3d(pos[i].x(), pos[i].y(), pos[i].z());
-    vi->C() = col[i];
-  }
-  auto fi = vcg::tri::Allocator<Mesh>::AddFaces(mesh, tris.size());
-  for (const auto& t : tris) {
-    for (int k = 0; k < 3; ++k) fi->V(k) = &mesh.vert[t[k]];
-    ++fi;
-  }
+  fill(mesh, pos, col, tris);
   if (hasColor) mask |= io::Mask::IOM_VERTCOLOR;
   return {};
 }
@@ -172,16 +178,7 @@ std::string readOff(const std::string& path, Mesh& mesh, int& mask) {
     if (k > 3) mask |= io::Mask::IOM_BITPOLYGONAL;
     for (long i = 1; i + 1 < k; ++i) tris.push_back({idx[0], idx[i], idx[i + 1]});
   }
-  auto vi = vcg::tri::Allocator<Mesh>::AddVertices(mesh, pos.size());
-  for (size_t i = 0; i < pos.size(); ++i, ++vi) {
-    vi->P() = vcg::Point3d(pos[i].x(), pos[i].y(), pos[i].z());
-    vi->C() = col[i];
-  }
-  auto fi = vcg::tri::Allocator<Mesh>::AddFaces(mesh, tris.size());
-  for (const auto& t : tris) {
-    for (int k = 0; k < 3; ++k) fi->V(k) = &mesh.vert[t[k]];
-    ++fi;
-  }
+  fill(mesh, pos, col, tris);
   mask |= io::Mask::IOM_VERTCOORD | io::Mask::IOM_FACEINDEX;
   if (anyColor) mask |= io::Mask::IOM_VERTCOLOR;
   return {};
