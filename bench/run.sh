@@ -28,7 +28,7 @@ if [ "$QUICK" = 1 ]; then COUNTS=8,16,32; LEVELS=2; else COUNTS=8,16,32,64,128; 
 "$B" scaling "$MESHES/cow.off" "$OUT/scaling_size" "$LEVELS" 32 | tee "$OUT/scaling_size.log"
 
 echo "== stress"
-if [ "$QUICK" = 1 ]; then SETS=3; else SETS=10; fi
+if [ "$QUICK" = 1 ]; then SETS=2; else SETS=5; fi
 "$B" stress "$OUT" "$SETS" 4,8,16,32,64,150 | tee "$OUT/stress.log"
 
 echo "== plots and renders"

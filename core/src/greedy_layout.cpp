@@ -157,6 +157,11 @@ GreedyLayoutResult buildGreedyLayout(const IndexedMesh& S, const std::vector<int
     if (!ps.found) return 0;
     const TracedPath pt = st.tracer.trace(qt);
     if (!pt.found) return 0;
+    // Cyclic order first, before anything is cut into the meshes: the two paths must leave
+    // both anchors between the same existing edges.
+    if (ss.tracer.sectorOf(ps, false) != st.tracer.sectorOf(pt, false) ||
+        ss.tracer.sectorOf(ps, true) != st.tracer.sectorOf(pt, true))
+      return 0;
     std::vector<int> cs, ct;
     if (Status s = ss.tracer.commit(ps, id, cs); !s) return r.status = s, -1;
     if (Status s = st.tracer.commit(pt, id, ct); !s) return r.status = s, -1;

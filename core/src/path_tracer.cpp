@@ -333,6 +333,44 @@ TracedPath PathTracer::trace(const PathQuery& q) {
   return result;
 }
 
+std::pair<int, int> PathTracer::sectorOf(const TracedPath& path, bool atEnd) const {
+  const size_t n = path.nodes.size();
+  const int a = static_cast<int>(atEnd ? path.nodes[n - 1] : path.nodes[0]);
+  const int64_t next = atEnd ? path.nodes[n - 2] : path.nodes[1];
+  // A face around the anchor that the first step lies in (or borders, for a step along an edge).
+  auto touches = [&](int f) {
+    if (next >= 0) {
+      for (int v : mesh_.faceVertices(f))
+        if (v == next) return true;
+      return false;
+    }
+    const int e = slotEdge_[static_cast<size_t>(-next - 1)];
+    return mesh_.face(2 * e) == f || mesh_.face(2 * e + 1) == f;
+  };
+  const int start = mesh_.outgoing(a);
+  int h = start, leave = -1;
+  do {
+    if (touches(mesh_.face(h))) leave = h;
+    h = mesh_.rotateCCW(h);
+  } while (h != start && leave < 0);
+  if (leave < 0) return {-1, -1};
+  // Counter-clockwise from the face: the first path edge is "after"; clockwise, "before".
+  int after = -1, before = -1;
+  h = leave;
+  for (int guard = 0; guard < 100000; ++guard) {
+    h = mesh_.rotateCCW(h);
+    if (edgePath_[RefinedMesh::edgeOf(h)] >= 0) { after = edgePath_[RefinedMesh::edgeOf(h)]; break; }
+    if (h == leave) break;
+  }
+  h = leave;
+  for (int guard = 0; guard < 100000; ++guard) {
+    if (edgePath_[RefinedMesh::edgeOf(h)] >= 0) { before = edgePath_[RefinedMesh::edgeOf(h)]; break; }
+    h = mesh_.next(RefinedMesh::twin(h));  // one step clockwise
+    if (h == leave) break;
+  }
+  return {before, after};
+}
+
 Status PathTracer::commit(const TracedPath& path, int pathId, std::vector<int>& vertices) {
   vertices.clear();
   if (!path.found || path.nodes.size() < 2 || path.nodes.front() < 0 || path.nodes.back() < 0)

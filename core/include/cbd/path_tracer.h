@@ -103,6 +103,12 @@ class PathTracer {
   /// Undo a committed path (its vertices stay in the mesh; its edges become free again).
   void release(const std::vector<int>& vertices, int pathId);
 
+  /// The committed paths a traced (not yet committed) path would lie between where it leaves
+  /// its first (`atEnd` false) or last node, an anchor: (the path edge before it, the one after
+  /// it) counter-clockwise, -1 when none leaves that anchor. Lets a caller check cyclic order
+  /// before cutting a path into the mesh.
+  std::pair<int, int> sectorOf(const TracedPath& path, bool atEnd) const;
+
   /// Edge nodes currently on edge e (0 on path edges).
   int edgeNodeCount(int e) const { return edgeNodes_[e]; }
   /// Total nodes (vertices + edge nodes) of the current graph.
