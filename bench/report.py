@@ -39,7 +39,6 @@ def write_plots():
     for metric, label in [('e_ang', 'E_ang'), ('e_l2', 'E_L2'), ('t_layout', 'layout time (s)')]:
         dat = os.path.join(plots, metric + '.dat')
         with open(dat, 'w') as f:
-            f.write('pair ' + ' '.join(methods) + '\n')
             for p in pairs:
                 vals = []
                 for m in methods:
@@ -53,11 +52,11 @@ set style data histograms
 set style histogram clustered gap 1
 set style fill solid 0.85 border -1
 set datafile missing '?'
-set key top left
+set key outside right top noenhanced
 set ylabel '{label}'
 set xtics rotate by -20
 {"set logscale y" if metric == 't_layout' else ""}
-plot '{dat}' using 2:xtic(1) title 'greedy (Kraevoy & Sheffer)', '' using 3 title 'Voronoi E1', '' using 4 title 'Voronoi C'
+plot '{dat}' using 2:xtic(1) title 'greedy (Kraevoy and Sheffer)', '' using 3 title 'Voronoi E1', '' using 4 title 'Voronoi C'
 """)
     for name, data, xcol, xlabel in [('scaling_anchors', scal_a, 'anchors', 'anchors'),
                                      ('scaling_size', scal_s, 'vertices', 'vertices')]:
