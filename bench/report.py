@@ -151,8 +151,9 @@ if not readme:
 stress_md = open(os.path.join(out, 'stress.md')).read() if os.path.exists(os.path.join(out, 'stress.md')) else '(not run)'
 print(f"""# Benchmark
 
-Everything below was written by `bench/run.sh` from one run on this machine: {machine()}.
-Reproduce from scratch with
+Every number below comes from the CSV files of `bench/run.sh` on this machine ({machine()}),
+turned into this page by `bench/report.py`; each section is one `cbd_bench` command of the
+script and can be re-run alone. Reproduce everything from scratch with
 
 ```sh
 bash bench/run.sh

@@ -47,7 +47,7 @@ SyntheticPair makePair(int genus) {
       const double u = std::atan2(q.y(), q.x());
       const Vec3 c(R * std::cos(u), R * std::sin(u), 0), radial(std::cos(u), std::sin(u), 0), up(0, 0, 1);
       const Vec3 d = q - c;
-      const double a = d.dot(radial), b = d.dot(up), tw = 0.5 * u, bump = 1.0 + 0.25 * std::sin(3 * u);
+      const double a = d.dot(radial), b = d.dot(up), tw = 0.8 * std::sin(u), bump = 1.0 + 0.25 * std::sin(3 * u);  // periodic: no seam
       q = c + bump * ((a * std::cos(tw) - b * std::sin(tw)) * radial + (a * std::sin(tw) + b * std::cos(tw)) * up);
     }
   } else {
