@@ -34,7 +34,7 @@ if [ "$FUZZ_SECONDS" -gt 0 ]; then
     if ls "$ROOT/tests/fuzz/regressions/$t"-* >/dev/null 2>&1; then
       "$ROOT/build-fuzz/tests/fuzz/fuzz_$t" "$ROOT/tests/fuzz/regressions/$t"-* 2>&1 | tail -n 1
     fi
-    "$ROOT/build-fuzz/tests/fuzz/fuzz_$t" -seed=1 -max_total_time="$FUZZ_SECONDS" -print_final_stats=1 \
+    "$ROOT/build-fuzz/tests/fuzz/fuzz_$t" -seed=1 -timeout=20 -max_total_time="$FUZZ_SECONDS" -print_final_stats=1 \
       -artifact_prefix="$ROOT/build-fuzz/crash-$t-" "$work" 2>&1 | tail -n 3
     rm -rf "$work"
   done

@@ -252,6 +252,7 @@ std::string checkPly(const std::string& path) {
     }
   }
   if (!ended) return "no end_header line";
+  const std::streampos dataStart = in.tellg();
   long long vertices = 0;
   for (const Element& e : elements) {
     if (e.name == "vertex") vertices = e.count;
@@ -280,8 +281,14 @@ std::string checkPly(const std::string& path) {
     }
     return std::isfinite(v) || isFloat;
   };
+  in.seekg(0, std::ios::end);
+  const long long fileSize = static_cast<long long>(in.tellg());
+  in.seekg(dataStart);
   for (const Element& e : elements) {
     const bool isFace = e.name == "face";
+    if (e.props.empty()) continue;  // nothing to read, whatever the count
+    // Every instance takes at least one byte (binary) or one character (ASCII).
+    if (e.count > fileSize) return "element '" + e.name + "' claims more items than the file has bytes";
     for (long long i = 0; i < e.count; ++i)
       for (const Property& pr : e.props) {
         double v = 0;
