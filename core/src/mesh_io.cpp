@@ -137,7 +137,8 @@ std::string readOff(const std::string& path, Mesh& mesh, int& mask) {
   long nv = -1, nf = -1;
   if (counts.size() < 2 || !integer(counts[0], nv) || !integer(counts[1], nf) || nv < 0 || nf < 0)
     return "bad vertex/face counts";
-  if (lines.size() < next + static_cast<size_t>(nv) + static_cast<size_t>(nf))
+  if (static_cast<size_t>(nv) > lines.size() || static_cast<size_t>(nf) > lines.size() ||
+      lines.size() < next + static_cast<size_t>(nv) + static_cast<size_t>(nf))
     return "fewer lines than the header's " + std::to_string(nv) + " vertices and " + std::to_string(nf) + " faces";
   std::vector<Vec3> pos(nv);
   std::vector<vcg::Color4b> col(nv, vcg::Color4b::LightGray);
@@ -339,7 +340,26 @@ std::string readAsciiStl(std::istream& in, Mesh& mesh) {
 
 }  // namespace
 
+namespace {
+LoadResult loadMeshUnchecked(const std::string& path, Mesh& mesh);
+}  // namespace
+
 LoadResult loadMesh(const std::string& path, Mesh& mesh) {
+  // A malformed file must never take the caller down: allocation failures inside the readers
+  // (absurd counts) become MalformedMesh too.
+  try {
+    return loadMeshUnchecked(path, mesh);
+  } catch (const std::exception& e) {
+    mesh.Clear();
+    LoadResult r;
+    r.status = Status::error(ErrorCode::MalformedMesh,
+                             "cannot parse mesh '" + path + "': " + e.what() + " (the file is not a valid mesh file)");
+    return r;
+  }
+}
+
+namespace {
+LoadResult loadMeshUnchecked(const std::string& path, Mesh& mesh) {
   LoadResult r;
   mesh.Clear();
   std::error_code ec;
@@ -448,6 +468,8 @@ LoadResult loadMesh(const std::string& path, Mesh& mesh) {
   }
   return r;
 }
+
+}  // namespace
 
 Status savePly(const std::string& path, const Mesh& mesh, const SavePlyOptions& options) {
   namespace io = vcg::tri::io;

@@ -213,7 +213,7 @@ namespace {
 /// Grid-indexed point location among the faces of one patch in the domain triangle.
 class GridLocator {
  public:
-  GridLocator(const std::vector<int>& faces, const std::vector<std::array<Vec2, 3>>& uv) : faces_(faces), uv_(uv) {
+  GridLocator(const std::vector<int>& faces, const std::vector<std::array<Vec2, 3>>& uv) : uv_(uv) {
     n_ = std::max(1, static_cast<int>(std::sqrt(static_cast<double>(faces.size()))));
     cells_.assign(static_cast<size_t>(n_) * n_, {});
     for (int f : faces) {
@@ -263,7 +263,6 @@ class GridLocator {
     auto clampi = [&](double t) { return std::clamp(static_cast<int>(std::floor(t * n_)), 0, n_ - 1); };
     return {clampi(p.x()), clampi(p.y() / (std::sqrt(3.0) / 2.0))};
   }
-  const std::vector<int>& faces_;
   const std::vector<std::array<Vec2, 3>>& uv_;
   int n_ = 1;
   std::vector<std::vector<int>> cells_;
