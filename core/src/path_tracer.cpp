@@ -108,9 +108,9 @@ TracedPath PathTracer::trace(const PathQuery& q) {
   const int nv = mesh_.vertexCount();
   const size_t ns = slotEdge_.size();
   if (distV_.size() < static_cast<size_t>(nv)) {
-    distV_.resize(nv), parentV_.resize(nv), stampV_.resize(nv, 0), doneV_.resize(nv, 0), blockV_.resize(nv, 0);
+    distV_.resize(nv), parentV_.resize(nv), stampV_.resize(nv, 0), blockV_.resize(nv, 0);
   }
-  if (distS_.size() < ns) distS_.resize(ns), parentS_.resize(ns), stampS_.resize(ns, 0), doneS_.resize(ns, 0);
+  if (distS_.size() < ns) distS_.resize(ns), parentS_.resize(ns), stampS_.resize(ns, 0);
   if (blockE_.size() < static_cast<size_t>(mesh_.edgeCount())) blockE_.resize(mesh_.edgeCount(), 0);
   ++stamp_;
   const uint32_t st = stamp_;

@@ -210,12 +210,10 @@ MeshReport validateMesh(const IndexedMesh& mesh, const std::string& name, bool h
     for (const auto& t : mesh.faces)
       for (int k = 0; k < 3; ++k) link[fill[t[k]]++] = {t[(k + 1) % 3], t[(k + 2) % 3]};
     int bad = 0, example = -1;
-    std::vector<int> nbr;
     for (int v = 0; v < nv; ++v) {
       const int n = start[v + 1] - start[v];
       if (n == 0) continue;
       // Walk the link cycle from the first corner; a manifold vertex visits every corner.
-      nbr.assign(n, -1);
       int visited = 1, cur = 0;
       std::vector<char> seen(n, 0);
       seen[0] = 1;

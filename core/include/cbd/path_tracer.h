@@ -133,7 +133,7 @@ class PathTracer {
   // Dijkstra scratch (stamped so nothing is cleared between searches).
   std::vector<double> distV_, distS_;
   std::vector<int64_t> parentV_, parentS_;
-  std::vector<uint32_t> stampV_, stampS_, doneV_, doneS_, blockV_, blockE_;
+  std::vector<uint32_t> stampV_, stampS_, blockV_, blockE_;
   uint32_t stamp_ = 0;
 };
 
