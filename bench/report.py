@@ -80,13 +80,13 @@ plot '{os.path.join(plots, name + '_greedy.dat')}' using 1:2 with linespoints ti
 """)
 
 def md_table():
-    lines = ['| pair | V src / tgt | anchors | method | E_ang | E_ang (deg) | E_L2 | E_L2 inverse | flipped | layout s | total s | peak MB | note |',
+    lines = ['| pair | V src / tgt | anchors | method | E_ang | E_ang (deg) | E_L2 | E_L2 inverse | flipped (before untangling) | layout s | total s | peak MB | note |',
              '|---|---|---|---|---|---|---|---|---|---|---|---|---|']
     for r in table:
         ok = r['status'] == 'ok'
         f = lambda k, d=3: ('%.*f' % (d, float(r[k]))) if ok else '-'
         lines.append(f"| {r['pair']} | {r['source_vertices']} / {r['target_vertices']} | {r['anchors']} | {r['method']} | "
-                     f"{f('e_ang')} | {f('e_ang_deg', 1)} | {f('e_l2')} | {f('e_l2_inverse', 2)} | {r['flipped'] if ok else '-'} | "
+                     f"{f('e_ang')} | {f('e_ang_deg', 1)} | {f('e_l2')} | {f('e_l2_inverse', 2)} | {(r['flipped'] + ' (' + r.get('flipped_before_untangle', '?') + ')') if ok else '-'} | "
                      f"{float(r['t_layout']):.3f} | {float(r['t_total']):.3f} | {float(r['peak_mb']):.0f} | "
                      f"{'' if ok else 'failed: ' + r['error'][:120]} |")
     return '\n'.join(lines)

@@ -136,6 +136,7 @@ struct RunArgs {
   double snapTolerance = 0.01;
   int morph = 0;
   int smooth = 0;
+  bool noUntangle = false;
 };
 
 double elapsed(std::chrono::steady_clock::time_point t0) {
@@ -148,6 +149,7 @@ cbd::CrossParameterizationOptions pipelineOptions(const RunArgs& a) {
   o.edgeNodes.minEdgeNodes = a.singleEdgeNode ? 1 : a.minEdgeNodes;
   o.edgeNodes.adaptive = !a.singleEdgeNode;
   o.smoothing.iterations = a.smooth;
+  o.untangle = !a.noUntangle;
   return o;
 }
 
@@ -190,7 +192,7 @@ json layoutJson(const cbd::LayoutPair& p) {
 json timesJson(const cbd::StageTimes& t) {
   return {{"voronoi", t.voronoi},         {"source_layout", t.sourceLayout},
           {"target_layout", t.targetLayout}, {"parameterization", t.parameterization},
-          {"distortion", t.distortion},   {"total", t.total}};
+          {"untangle", t.untangle},       {"distortion", t.distortion},   {"total", t.total}};
 }
 
 void printLayout(const cbd::LayoutPair& p) {
@@ -309,6 +311,12 @@ int runMap(const RunArgs& a) {
   if (a.smooth > 0)
     j["smoothing"] = {{"iterations", a.smooth}, {"moves", r.smoothing.moves}, {"rejected", r.smoothing.rejected},
                       {"flipped_before", r.smoothing.flippedBefore}, {"flipped_after", r.smoothing.flippedAfter}};
+  if (!a.noUntangle) {
+    const auto &u = r.untangleSource, &w = r.untangleTarget;
+    j["untangle"] = {{"flipped_before", u.flippedBefore},         {"flipped_after", u.flippedAfter},
+                     {"moved_vertices", u.movedVertices},         {"inverse_flipped_before", w.flippedBefore},
+                     {"inverse_flipped_after", w.flippedAfter},   {"inverse_moved_vertices", w.movedVertices}};
+  }
   j["metrics"] = {{"e_ang", m.eAng},     {"e_ang_deg", m.eAngDegrees}, {"e_l2", m.eL2},
                   {"e_l2_inverse", m.eL2Inverse}, {"flipped", m.flipped}, {"degenerate", m.degenerate}};
   // M_st with the target's attributes, M_ts with the source's.
@@ -339,8 +347,14 @@ int runMap(const RunArgs& a) {
   printLayout(r.layouts);
   std::printf("map     E_ang %.4f (%.2f deg), E_L2 %.4f (inverse %.4f), %d flipped, %d degenerate triangles\n", m.eAng,
               m.eAngDegrees, m.eL2, m.eL2Inverse, m.flipped, m.degenerate);
-  std::printf("time    voronoi %.3f s, source layout %.3f s, target layout %.3f s, parameterization %.3f s, total %.3f s\n",
-              r.times.voronoi, r.times.sourceLayout, r.times.targetLayout, r.times.parameterization, r.times.total);
+  if (!a.noUntangle)
+    std::printf("untangle flipped triangles of M_st %d -> %d (%d vertices moved), of M_ts %d -> %d\n",
+                r.untangleSource.flippedBefore, r.untangleSource.flippedAfter, r.untangleSource.movedVertices,
+                r.untangleTarget.flippedBefore, r.untangleTarget.flippedAfter);
+  std::printf("time    voronoi %.3f s, source layout %.3f s, target layout %.3f s, parameterization %.3f s, "
+              "untangle %.3f s, total %.3f s\n",
+              r.times.voronoi, r.times.sourceLayout, r.times.targetLayout, r.times.parameterization, r.times.untangle,
+              r.times.total);
   std::printf("wrote   %s/mst.ply (source connectivity on the target; face quality = stretch), %s/mts.ply,\n"
               "        %s/correspondence.txt, %s/{source,target}/ layouts%s\n",
               dir.c_str(), dir.c_str(), dir.c_str(), dir.c_str(), a.morph > 0 ? ", morph_*.ply" : "");
@@ -437,6 +451,9 @@ int main(int argc, char** argv) {
                      "(mts.ply, the inverse map, is not smoothed)")
       ->capture_default_str()
       ->check(CLI::Range(0, 1000));
+  cmdMap->add_flag("--no-untangle", map.noUntangle,
+                   "keep the composed map as it is: do not move the images of the vertices of flipped M_st / M_ts "
+                   "triangles over the target (the default removes most flips and lowers E_ang; see README)");
   cmdMap->add_option("--morph", map.morph, "also write K meshes OUT/morph_000.ply ... blending the source (fitted onto the target by its anchors) into M_st")
       ->check(CLI::Range(2, 1000));
 

@@ -201,7 +201,9 @@ std::string layoutLine(const cbd::LayoutPair& p) {
 std::string timesLine(const cbd::StageTimes& t, bool withMap) {
   std::string s = "timings: voronoi " + seconds(t.voronoi) + ", source layout " + seconds(t.sourceLayout) +
                   ", target layout " + seconds(t.targetLayout);
-  if (withMap) s += ", parameterization " + seconds(t.parameterization) + ", distortion " + seconds(t.distortion);
+  if (withMap)
+    s += ", parameterization " + seconds(t.parameterization) + ", untangle " + seconds(t.untangle) + ", distortion " +
+         seconds(t.distortion);
   return s + ", total " + seconds(t.total);
 }
 
@@ -327,6 +329,9 @@ cbd::Status runPipeline(const PipelineRequest& rq, vcg::CallBackPos* cb) {
     log("smoothing: " + std::to_string(o.smoothingIterations) + " iterations, " + std::to_string(r.smoothing.moves) +
         " moves, " + std::to_string(r.smoothing.rejected) + " rejected, flipped " +
         std::to_string(r.smoothing.flippedBefore) + " -> " + std::to_string(r.smoothing.flippedAfter));
+  log("untangle: flipped triangles of M_st " + std::to_string(r.untangleSource.flippedBefore) + " -> " +
+      std::to_string(r.untangleSource.flippedAfter) + " (" + std::to_string(r.untangleSource.movedVertices) +
+      " vertices moved over the target)");
   log("map: E_ang " + fixed(m.eAng, 4) + " (" + fixed(m.eAngDegrees, 2) + " deg), E_L2 " + fixed(m.eL2, 4) +
       " (inverse " + fixed(m.eL2Inverse, 4) + "), " + std::to_string(m.flipped) + " flipped, " +
       std::to_string(m.degenerate) + " degenerate triangles");

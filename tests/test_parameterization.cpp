@@ -138,6 +138,7 @@ TEST(MapSmoothing, NeverAddsFlipsKeepsAnchorsAndStaysOnTheTarget) {
   std::vector<int> ta;
   for (int v : sa) ta.push_back(fx::nearestVertex(tu, s.positions[v]));
   CrossParameterizationOptions o;
+  o.untangle = false;  // the smoothing alone (untangling has its own tests)
   const CrossParameterizationResult plain = crossParameterize(s, sa, t, ta, 2, o);
   ASSERT_TRUE(plain.status.ok()) << plain.status.message;
   o.smoothing.iterations = 10;

@@ -1,4 +1,5 @@
 #include "cbd/distortion.h"
+#include "cbd/map_untangle.h"
 
 #include <cmath>
 
@@ -31,11 +32,7 @@ DistortionMetrics computeDistortion(const IndexedMesh& S, const std::vector<Vec3
   DistortionMetrics d;
   const int nf = S.faceCount();
   d.faceStretch.assign(nf, 1.0);
-  std::vector<Vec3> targetNormal(T.faceCount());
-  for (int f = 0; f < T.faceCount(); ++f) {
-    const auto& t = T.faces[f];
-    targetNormal[f] = (T.positions[t[1]] - T.positions[t[0]]).cross(T.positions[t[2]] - T.positions[t[0]]).normalized();
-  }
+  const std::vector<Vec3> targetNormal = faceNormals(T);
   double diag2 = 0;
   {
     Vec3 lo = Vec3::Constant(1e300), hi = -lo;
@@ -55,10 +52,8 @@ DistortionMetrics computeDistortion(const IndexedMesh& S, const std::vector<Vec3
       ++d.degenerate;
       continue;
     }
-    Vec3 nt = Vec3::Zero();
-    for (int v : t)
-      if (onTarget[v].face >= 0) nt += targetNormal[onTarget[v].face];
-    if (ni.dot(nt) < 0) ++d.flipped;
+    if (imageFlipped(i0, i1, i2, targetNormal, onTarget[t[0]].face, onTarget[t[1]].face, onTarget[t[2]].face))
+      ++d.flipped;
     // Jacobian from the source triangle to its image, both in their own planes.
     const Eigen::Matrix2d J = planar(i0, i1, i2) * planar(s0, s1, s2).inverse();
     const Eigen::Vector2d sv = Eigen::JacobiSVD<Eigen::Matrix2d>(J).singularValues();

@@ -1,6 +1,7 @@
 #include "cbd/pipeline.h"
 
 #include <chrono>
+#include <thread>
 
 namespace cbd {
 namespace {
@@ -70,6 +71,20 @@ CrossParameterizationResult crossParameterize(const IndexedMesh& source, const s
     if (!r.smoothing.status) return r.status = r.smoothing.status, r;
   }
   r.times.parameterization = seconds(t1);
+  t1 = std::chrono::steady_clock::now();
+  if (options.untangle) {
+    std::vector<char> fixedS(source.vertexCount(), 0), fixedT(target.vertexCount(), 0);
+    for (int v : sa) fixedS[v] = 1;
+    for (int v : ta) fixedT[v] = 1;
+    // The two directions are independent: one on a second thread.
+    std::thread inverse([&] {
+      r.untangleTarget =
+          untangleCrossMap(target, source, fixedT, r.map.targetToSource, r.map.targetImage, options.untangling);
+    });
+    r.untangleSource = untangleCrossMap(source, target, fixedS, r.map.sourceToTarget, r.map.sourceImage, options.untangling);
+    inverse.join();
+  }
+  r.times.untangle = seconds(t1);
   t1 = std::chrono::steady_clock::now();
   r.metrics = computeDistortion(source, r.map.sourceImage, target, r.map.sourceToTarget);
   r.times.distortion = seconds(t1);

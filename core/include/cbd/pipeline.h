@@ -10,6 +10,7 @@
 #include "cbd/distortion.h"
 #include "cbd/greedy_layout.h"
 #include "cbd/map_smoothing.h"
+#include "cbd/map_untangle.h"
 #include "cbd/parameterization.h"
 #include "cbd/source_layout.h"
 #include "cbd/target_layout.h"
@@ -30,6 +31,8 @@ struct CrossParameterizationOptions {
   EdgeNodeOptions edgeNodes;            ///< b = 3 adaptive; {1, false} is the paper's E1
   ParameterizationOptions parameterization;
   MapSmoothingOptions smoothing;        ///< 0 iterations: the composed map as it is
+  bool untangle = true;                 ///< remove flipped triangles from M_st and M_ts (map_untangle.h)
+  MapUntangleOptions untangling;
 };
 
 /// Seconds spent in each stage.
@@ -37,7 +40,8 @@ struct StageTimes {
   double voronoi = 0.0;          ///< Voronoi clusters on both surfaces (0 for greedy)
   double sourceLayout = 0.0;     ///< greedy: all-pairs paths + trial and error (both surfaces)
   double targetLayout = 0.0;
-  double parameterization = 0.0; ///< both surfaces' patch maps + composition
+  double parameterization = 0.0; ///< both surfaces' patch maps + composition (+ smoothing)
+  double untangle = 0.0;         ///< removing flipped triangles from M_st and M_ts
   double distortion = 0.0;
   double total = 0.0;
 };
@@ -65,6 +69,8 @@ struct CrossParameterizationResult {
   PatchParameterization sourceParam, targetParam;
   CrossMap map;
   MapSmoothingResult smoothing;
+  MapUntangleResult untangleSource;   ///< M_st (source vertices on the target)
+  MapUntangleResult untangleTarget;   ///< M_ts (target vertices on the source)
   DistortionMetrics metrics;          ///< of M_st against the source
   StageTimes times;
 };

@@ -1,0 +1,72 @@
+#pragma once
+/// @file map_untangle.h
+/// Last stage of the cross-map: removing flipped triangles from M_st (the source's triangles
+/// at their images on the target).
+///
+/// The composed map is bijective between the two surfaces (both patch maps are convex-
+/// combination maps onto the same triangle), but M_st joins the images of the source's
+/// vertices by straight chords. Where a source triangle's image covers target faces whose
+/// parameterization Jacobians differ a lot, or straddles a sharp crease of the target, the
+/// chord triangle can face the wrong way: a flip (`imageFlipped`). This stage moves the images
+/// of the vertices of such triangles over the target surface (straight walks across target
+/// faces, so an image never leaves the surface) until no triangle of theirs is flipped:
+/// first local moves towards the average of the neighbours' images that reduce the vertex's
+/// flipped triangles or raise their worst normal agreement, then, where that stalls, a few
+/// sweeps of relaxation over a growing ring around what is still flipped that never add a
+/// flip. Anchors never move, and a vertex whose neighbourhood has no flip is left as it is,
+/// so a map without flips is returned unchanged (an identity map stays the identity).
+
+#include <vector>
+
+#include "cbd/mesh.h"
+#include "cbd/parameterization.h"
+
+namespace cbd {
+
+/// Options of `untangleCrossMap`.
+struct MapUntangleOptions {
+  int maxRounds = 40;     ///< rounds of (local moves, relaxation of a ring, of folds) at most
+  int maxRing = 6;        ///< widest ring (in source edges) around a flip that relaxation may move
+  /// A move may not leave a triangle of the vertex with a distortion above this (angle
+  /// distortion (s1/s2 + s2/s1)/2 - 1 plus the same of its area ratio to the global one),
+  /// unless one was already: trading a flip for a badly stretched triangle is no gain (a
+  /// higher bound removes more flips and raises E_L2).
+  double maxDistortion = 10.0;
+  /// Sweeps over all vertices at the end that only lower distortion and never add a flip
+  /// (0: only the neighbourhoods of flips are touched).
+  int polishSweeps = 5;
+};
+
+/// What `untangleCrossMap` did.
+struct MapUntangleResult {
+  Status status;
+  int flippedBefore = 0;  ///< flipped image triangles before (same test as the metrics)
+  int flippedAfter = 0;
+  int degenerateAfter = 0;
+  int moves = 0;          ///< accepted vertex moves
+  int movedVertices = 0;  ///< distinct vertices whose image changed
+};
+
+/// Whether the image triangle (i0, i1, i2) of a source face is flipped: its normal points
+/// against the sum of the normals of the target faces its three vertices lie on.
+/// `targetFaceNormal` holds the unit normal of every target face.
+bool imageFlipped(const Vec3& i0, const Vec3& i1, const Vec3& i2, const std::vector<Vec3>& targetFaceNormal,
+                  int face0, int face1, int face2);
+
+/// Unit normals of the faces of `mesh` (zero for a degenerate face).
+std::vector<Vec3> faceNormals(const IndexedMesh& mesh);
+
+/// Move the images of source vertices over `target` until no triangle of M_st is flipped.
+/// @param[in] source       the source surface (connectivity of M_st)
+/// @param[in] target       the surface the images lie on
+/// @param[in] fixed        per source vertex: 1 when its image must not move (anchors)
+/// @param[in,out] onTarget per source vertex: its image as a target face + barycentric
+///                         coordinates (face -1: unreferenced, ignored)
+/// @param[in,out] image    per source vertex: the 3D point of `onTarget`
+/// Pre-condition: `target` passed `validateMesh` (closed manifold, no degenerate face).
+/// Never fails on valid input; `flippedAfter` > 0 says what could not be untangled.
+MapUntangleResult untangleCrossMap(const IndexedMesh& source, const IndexedMesh& target,
+                                   const std::vector<char>& fixed, std::vector<FacePoint>& onTarget,
+                                   std::vector<Vec3>& image, const MapUntangleOptions& options = {});
+
+}  // namespace cbd

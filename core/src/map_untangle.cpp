@@ -1,0 +1,414 @@
+#include "cbd/map_untangle.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <unordered_map>
+
+namespace cbd {
+
+std::vector<Vec3> faceNormals(const IndexedMesh& m) {
+  std::vector<Vec3> n(m.faceCount(), Vec3::Zero());
+  for (int f = 0; f < m.faceCount(); ++f) {
+    const auto& t = m.faces[f];
+    const Vec3 c = (m.positions[t[1]] - m.positions[t[0]]).cross(m.positions[t[2]] - m.positions[t[0]]);
+    const double l = c.norm();
+    if (l > 0) n[f] = c / l;
+  }
+  return n;
+}
+
+namespace {
+
+/// The summed unit normals of the target faces under the three images of a face.
+Vec3 targetNormalSum(const std::vector<Vec3>& normal, int f0, int f1, int f2) {
+  Vec3 nt = Vec3::Zero();
+  for (int f : {f0, f1, f2})
+    if (f >= 0) nt += normal[f];
+  return nt;
+}
+
+}  // namespace
+
+bool imageFlipped(const Vec3& i0, const Vec3& i1, const Vec3& i2, const std::vector<Vec3>& normal, int f0, int f1,
+                  int f2) {
+  return (i1 - i0).cross(i2 - i0).dot(targetNormalSum(normal, f0, f1, f2)) < 0;
+}
+
+namespace {
+
+/// Straight walks over a closed triangle mesh: a displacement is laid into the plane of the
+/// start face and followed across edges, each crossing rotating what is left of it about the
+/// edge into the next face's plane (the unfolding isometry), so the walk stays on the surface.
+class SurfaceWalker {
+ public:
+  explicit SurfaceWalker(const IndexedMesh& m) : m_(m), normal_(faceNormals(m)), across_(m.faceCount(), {-1, -1, -1}) {
+    std::unordered_map<std::uint64_t, int> half;
+    half.reserve(3 * m.faces.size());
+    auto key = [](int a, int b) { return (static_cast<std::uint64_t>(a) << 32) | static_cast<std::uint32_t>(b); };
+    for (int f = 0; f < m.faceCount(); ++f)
+      for (int k = 0; k < 3; ++k) half.emplace(key(m.faces[f][k], m.faces[f][(k + 1) % 3]), f);
+    for (int f = 0; f < m.faceCount(); ++f)
+      for (int k = 0; k < 3; ++k) {  // across_[f][k]: the face across the edge opposite corner k
+        const auto it = half.find(key(m.faces[f][(k + 2) % 3], m.faces[f][(k + 1) % 3]));
+        if (it != half.end()) across_[f][k] = it->second;
+      }
+  }
+
+  const std::vector<Vec3>& normals() const { return normal_; }
+
+  Vec3 point(const FacePoint& p) const {
+    const auto& t = m_.faces[p.face];
+    return p.bary[0] * m_.positions[t[0]] + p.bary[1] * m_.positions[t[1]] + p.bary[2] * m_.positions[t[2]];
+  }
+
+  /// Walk from `start` by `d` (its component along the start face's normal is dropped).
+  FacePoint walk(FacePoint p, Vec3 d) const {
+    for (int step = 0; step < 512; ++step) {
+      const auto& t = m_.faces[p.face];
+      const Vec3& n = normal_[p.face];
+      d -= n * n.dot(d);
+      // Barycentric change db (summing to 0) with db1 e1 + db2 e2 = d.
+      const Vec3 e1 = m_.positions[t[1]] - m_.positions[t[0]], e2 = m_.positions[t[2]] - m_.positions[t[0]];
+      const double a11 = e1.dot(e1), a12 = e1.dot(e2), a22 = e2.dot(e2), det = a11 * a22 - a12 * a12;
+      if (!(det > 0)) return p;
+      const double r1 = e1.dot(d), r2 = e2.dot(d);
+      const double db1 = (a22 * r1 - a12 * r2) / det, db2 = (a11 * r2 - a12 * r1) / det;
+      const Vec3 db(-db1 - db2, db1, db2);
+      const Vec3 end = p.bary + db;
+      if (end.minCoeff() >= 0) {
+        p.bary = end / end.sum();
+        return p;
+      }
+      // Leave through the edge opposite the corner whose coordinate reaches 0 first.
+      double s = 2.0;
+      int k = -1;
+      for (int c = 0; c < 3; ++c)
+        if (db[c] < 0) {
+          const double sc = std::max(0.0, p.bary[c]) / -db[c];
+          if (sc < s) s = sc, k = c;
+        }
+      s = std::min(s, 1.0);
+      Vec3 b = p.bary + s * db;
+      b[k] = 0.0;
+      b = b.cwiseMax(0.0);
+      b /= b.sum();
+      const int next = across_[p.face][k];
+      if (next < 0) return p.bary = b, p;
+      // Rotate the rest of the step about the crossed edge into the next face's plane.
+      const int va = t[(k + 1) % 3], vb = t[(k + 2) % 3];
+      const Vec3 axis = (m_.positions[vb] - m_.positions[va]).normalized();
+      const Vec3 rest = (1.0 - s) * d;
+      const Vec3 ug = n.cross(axis), uh = normal_[next].cross(axis);
+      d = rest.dot(axis) * axis + rest.dot(ug) * uh;
+      FacePoint q;
+      q.face = next;
+      const auto& u = m_.faces[next];
+      for (int c = 0; c < 3; ++c) q.bary[c] = u[c] == va ? b[(k + 1) % 3] : u[c] == vb ? b[(k + 2) % 3] : 0.0;
+      p = q;
+      if (d.squaredNorm() == 0) return p;
+    }
+    return p;
+  }
+
+ private:
+  const IndexedMesh& m_;
+  std::vector<Vec3> normal_;
+  std::vector<std::array<int, 3>> across_;
+};
+
+/// How one vertex's image triangles look: how many are flipped or degenerate, and their
+/// summed cost (angle distortion of the good ones, a large penalty growing with the
+/// disagreement for the bad ones).
+struct Score {
+  int bad = 0;
+  double cost = 0.0;
+  double worstGood = 0.0;  ///< the largest cost of a good triangle
+  bool betterThan(const Score& o) const { return bad < o.bad || (bad == o.bad && cost < o.cost * (1.0 - 1e-9)); }
+};
+
+/// Angle distortion (s1/s2 + s2/s1)/2 - 1 of the map from triangle (s0,s1,s2) to (i0,i1,i2),
+/// both in their own planes: |J|_F^2 / (2 |det J|) - 1.
+double angleDistortion(const Vec3& s0, const Vec3& s1, const Vec3& s2, const Vec3& i0, const Vec3& i1, const Vec3& i2) {
+  auto frame = [](const Vec3& p0, const Vec3& p1, const Vec3& p2, double& a, double& bx, double& by) {
+    const Vec3 e = p1 - p0, f = p2 - p0;
+    a = e.norm();
+    const Vec3 x = e / a;
+    bx = f.dot(x);
+    by = e.cross(f).norm() / a;
+  };
+  double sa, sbx, sby, ia, ibx, iby;
+  frame(s0, s1, s2, sa, sbx, sby);
+  frame(i0, i1, i2, ia, ibx, iby);
+  if (!(sa > 0 && sby > 0 && ia > 0 && iby > 0)) return 1e12;
+  // J = I * S^-1 with S = [sa sbx; 0 sby], I = [ia ibx; 0 iby].
+  const double j11 = ia / sa, j12 = (ibx - ia * sbx / sa) / sby, j22 = iby / sby;
+  return (j11 * j11 + j12 * j12 + j22 * j22) / (2.0 * j11 * j22) - 1.0;
+}
+
+}  // namespace
+
+MapUntangleResult untangleCrossMap(const IndexedMesh& S, const IndexedMesh& T, const std::vector<char>& fixed,
+                                   std::vector<FacePoint>& onTarget, std::vector<Vec3>& image,
+                                   const MapUntangleOptions& options) {
+  MapUntangleResult r;
+  const int nv = S.vertexCount(), nf = S.faceCount();
+  const SurfaceWalker walker(T);
+  const std::vector<Vec3>& normal = walker.normals();
+  double diag2 = 0;
+  {
+    Vec3 lo = Vec3::Constant(1e300), hi = -lo;
+    for (const Vec3& p : T.positions) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+    diag2 = (hi - lo).squaredNorm();
+  }
+  // Target area per unit of source area, over the whole surfaces.
+  double areaS = 0, areaT = 0;
+  for (const auto& t : S.faces) areaS += (S.positions[t[1]] - S.positions[t[0]]).cross(S.positions[t[2]] - S.positions[t[0]]).norm();
+  for (const auto& t : T.faces) areaT += (T.positions[t[1]] - T.positions[t[0]]).cross(T.positions[t[2]] - T.positions[t[0]]).norm();
+  const double areaScale = areaS > 0 && areaT > 0 ? areaT / areaS : 1.0;
+  std::vector<std::vector<int>> facesOf(nv), nbr(nv);
+  for (int f = 0; f < nf; ++f)
+    for (int k = 0; k < 3; ++k) {
+      facesOf[S.faces[f][k]].push_back(f);
+      nbr[S.faces[f][k]].push_back(S.faces[f][(k + 1) % 3]);
+      nbr[S.faces[f][k]].push_back(S.faces[f][(k + 2) % 3]);
+    }
+  for (auto& n : nbr) {
+    std::sort(n.begin(), n.end());
+    n.erase(std::unique(n.begin(), n.end()), n.end());
+  }
+  auto movable = [&](int v) { return !facesOf[v].empty() && onTarget[v].face >= 0 && !(v < (int)fixed.size() && fixed[v]); };
+
+  // Face f's image with vertex v (optionally) at (x, on face g): bad (flipped or degenerate)
+  // and its cost.
+  struct FaceEval {
+    bool bad = false, degenerate = false;
+    double cost = 0.0;
+  };
+  auto evalFace = [&](int f, int v, const Vec3& x, int g) {
+    const auto& t = S.faces[f];
+    Vec3 p[3];
+    int on[3];
+    for (int k = 0; k < 3; ++k) {
+      p[k] = t[k] == v ? x : image[t[k]];
+      on[k] = t[k] == v ? g : onTarget[t[k]].face;
+    }
+    FaceEval e;
+    const Vec3 c = (p[1] - p[0]).cross(p[2] - p[0]);
+    if (0.5 * c.norm() <= 1e-12 * diag2) {  // degenerate, as the metrics count it
+      e.bad = e.degenerate = true;
+      e.cost = 1e9;
+      return e;
+    }
+    const Vec3 nt = targetNormalSum(normal, on[0], on[1], on[2]);
+    const double l = nt.norm();
+    const double q = l > 0 ? c.dot(nt) / (c.norm() * l) : 1.0;
+    if (q < 0) {
+      e.bad = true;
+      e.cost = 1e6 * (1.0 - q);
+      return e;
+    }
+    // Angle distortion plus area distortion relative to the global scale (both 0 at best).
+    const double sourceArea = (S.positions[t[1]] - S.positions[t[0]]).cross(S.positions[t[2]] - S.positions[t[0]]).norm();
+    const double sigma = c.norm() / (sourceArea * areaScale);
+    e.cost = std::min(1e5, angleDistortion(S.positions[t[0]], S.positions[t[1]], S.positions[t[2]], p[0], p[1], p[2]) +
+                               0.5 * (sigma + 1.0 / sigma) - 1.0);
+    return e;
+  };
+  auto bad = [&](int f) { return evalFace(f, -1, Vec3::Zero(), -1).bad; };
+  auto score = [&](int v, const Vec3& x, int g) {
+    Score s;
+    for (int f : facesOf[v]) {
+      const FaceEval e = evalFace(f, v, x, g);
+      s.bad += e.bad;
+      s.cost += e.cost;
+      if (!e.bad) s.worstGood = std::max(s.worstGood, e.cost);
+    }
+    return s;
+  };
+  auto countBad = [&] {
+    int n = 0;
+    for (int f = 0; f < nf; ++f) n += bad(f);
+    return n;
+  };
+  // Averages of the neighbours' images: uniform, and with the source's mean-value weights.
+  auto averages = [&](int v) {
+    std::vector<Vec3> out;
+    Vec3 u = Vec3::Zero();
+    for (int w : nbr[v]) u += image[w];
+    out.push_back(u / static_cast<double>(nbr[v].size()));
+    Vec3 m = Vec3::Zero();
+    double ws = 0;
+    for (int f : facesOf[v]) {
+      const auto& t = S.faces[f];
+      const int k = t[0] == v ? 0 : t[1] == v ? 1 : 2;
+      const int a = t[(k + 1) % 3], b = t[(k + 2) % 3];
+      const Vec3 ea = S.positions[a] - S.positions[v], eb = S.positions[b] - S.positions[v];
+      const double tn = std::tan(0.5 * std::atan2(ea.cross(eb).norm(), ea.dot(eb)));
+      const double wa = tn / std::max(ea.norm(), 1e-300), wb = tn / std::max(eb.norm(), 1e-300);
+      m += wa * image[a] + wb * image[b];
+      ws += wa + wb;
+    }
+    if (ws > 0) out.push_back(m / ws);
+    return out;
+  };
+  std::vector<char> moved(nv, 0);
+  auto apply = [&](int v, const FacePoint& fp) {
+    onTarget[v] = fp;
+    image[v] = walker.point(fp);
+    moved[v] = 1;
+    ++r.moves;
+  };
+
+  r.flippedBefore = 0;
+  for (int f = 0; f < nf; ++f) {
+    const auto& t = S.faces[f];
+    r.flippedBefore += !evalFace(f, -1, Vec3::Zero(), -1).degenerate &&
+                       imageFlipped(image[t[0]], image[t[1]], image[t[2]], normal, onTarget[t[0]].face,
+                                    onTarget[t[1]].face, onTarget[t[2]].face);
+  }
+  int badNow = countBad();
+  int ring = 0;
+  const double cap = options.maxDistortion;
+  int stalled = 0;
+  for (int round = 0; round < options.maxRounds && badNow > 0; ++round) {
+    // 1. Local moves of the vertices of bad triangles.
+    std::vector<char> active(nv, 0);
+    for (int f = 0; f < nf; ++f)
+      if (bad(f))
+        for (int v : S.faces[f]) active[v] = movable(v);
+    for (int pass = 0; pass < 4; ++pass) {
+      bool any = false;
+      for (int v = 0; v < nv; ++v) {
+        if (!active[v]) continue;
+        const Score cur = score(v, image[v], onTarget[v].face);
+        if (cur.bad == 0) continue;
+        std::vector<Vec3> goals = averages(v);
+        for (int f : facesOf[v]) {  // across the opposite edge of each bad triangle
+          if (!bad(f)) continue;
+          const auto& t = S.faces[f];
+          const int k = t[0] == v ? 0 : t[1] == v ? 1 : 2;
+          goals.push_back(0.5 * (image[t[(k + 1) % 3]] + image[t[(k + 2) % 3]]));
+        }
+        Score best = cur;
+        FacePoint bestFp;
+        auto tryStep = [&](const Vec3& d) {
+          const FacePoint fp = walker.walk(onTarget[v], d);
+          const Score s = score(v, walker.point(fp), fp.face);
+          // Trading a flip for a badly distorted triangle is no gain: such candidates are out.
+          if (s.worstGood > std::max(cap, cur.worstGood)) return;
+          if (s.betterThan(best)) best = s, bestFp = fp;
+        };
+        for (const Vec3& goal : goals)
+          for (double step : {1.0, 0.5, 0.25, 0.125, 1.5}) tryStep(step * (goal - image[v]));
+        // A ring of directions in the tangent plane, at fractions of the image edge length.
+        double len = 0;
+        for (int w : nbr[v]) len += (image[w] - image[v]).norm();
+        len /= static_cast<double>(nbr[v].size());
+        const Vec3& n = normal[onTarget[v].face];
+        const Vec3 ax = (std::abs(n.x()) < 0.9 ? Vec3::UnitX() : Vec3::UnitY()).cross(n).normalized(), ay = n.cross(ax);
+        for (double radius : {0.1, 0.3, 0.6, 1.0, 2.0})
+          for (int k = 0; k < 12; ++k) {
+            const double a = 2.0 * M_PI * k / 12.0;
+            tryStep(radius * len * (std::cos(a) * ax + std::sin(a) * ay));
+          }
+        if (best.betterThan(cur)) {
+          apply(v, bestFp);
+          any = true;
+          for (int w : nbr[v]) active[w] = movable(w);
+        }
+      }
+      if (!any) break;
+    }
+    const int after = countBad();
+    if (after == 0) {
+      badNow = 0;
+      break;
+    }
+    // 2. Where local moves stall, relax a ring around what is left, never adding a bad triangle.
+    if (after < badNow) ring = std::max(ring, 1);
+    else if (ring < options.maxRing) ++ring;
+    else if (++stalled >= 2) break;  // the widest ring did not help twice: nothing moves any more
+    badNow = after;
+    std::vector<int> dist(nv, -1), frontier;
+    for (int f = 0; f < nf; ++f)
+      if (bad(f))
+        for (int v : S.faces[f])
+          if (dist[v] < 0) dist[v] = 0, frontier.push_back(v);
+    for (int d = 1; d <= ring; ++d) {
+      std::vector<int> next;
+      for (int v : frontier)
+        for (int w : nbr[v])
+          if (dist[w] < 0) dist[w] = d, next.push_back(w);
+      frontier.swap(next);
+    }
+    for (int sweep = 0; sweep < 3; ++sweep)
+      for (int v = 0; v < nv; ++v) {
+        if (dist[v] < 0 || !movable(v)) continue;
+        const Score cur = score(v, image[v], onTarget[v].face);
+        const Vec3 goal = averages(v).back();
+        const FacePoint fp = walker.walk(onTarget[v], 0.5 * (goal - image[v]));
+        const Score s = score(v, walker.point(fp), fp.face);
+        if (s.bad <= cur.bad && s.cost < cur.cost) apply(v, fp);
+      }
+    // 3. A fold (several triangles flipped over together) gives way to no single move: each
+    //    connected region within the ring is relaxed as a whole, its outer ring fixed (a
+    //    convex-combination map of a disk, as Tutte's), and kept only when it has fewer bad
+    //    triangles than before.
+    std::vector<char> seen(nv, 0);
+    for (int seed = 0; seed < nv; ++seed) {
+      if (seen[seed] || dist[seed] < 0 || dist[seed] >= ring || !movable(seed)) continue;
+      std::vector<int> region{seed};
+      seen[seed] = 1;
+      for (size_t i = 0; i < region.size(); ++i)
+        for (int w : nbr[region[i]])
+          if (!seen[w] && dist[w] >= 0 && dist[w] < ring && movable(w)) seen[w] = 1, region.push_back(w);
+      std::vector<int> faces;
+      for (int v : region) faces.insert(faces.end(), facesOf[v].begin(), facesOf[v].end());
+      std::sort(faces.begin(), faces.end());
+      faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
+      auto regionBad = [&] {
+        int n = 0;
+        for (int f : faces) n += bad(f);
+        return n;
+      };
+      const int before = regionBad();
+      if (before == 0) continue;
+      std::vector<FacePoint> keepFp;
+      std::vector<Vec3> keepX;
+      for (int v : region) keepFp.push_back(onTarget[v]), keepX.push_back(image[v]);
+      for (int sweep = 0; sweep < 40; ++sweep)
+        for (int v : region) {
+          onTarget[v] = walker.walk(onTarget[v], averages(v).back() - image[v]);
+          image[v] = walker.point(onTarget[v]);
+        }
+      if (regionBad() < before) {
+        for (int v : region) moved[v] = 1;
+        r.moves += static_cast<int>(region.size());
+      } else {
+        for (size_t i = 0; i < region.size(); ++i) onTarget[region[i]] = keepFp[i], image[region[i]] = keepX[i];
+      }
+    }
+    badNow = countBad();
+  }
+  // Polish: sweeps over every vertex towards its neighbours' weighted average, each move kept
+  // only when it lowers the distortion of the vertex's triangles and adds no bad one.
+  for (int sweep = 0; sweep < options.polishSweeps; ++sweep)
+    for (int v = 0; v < nv; ++v) {
+      if (!movable(v)) continue;
+      const Score cur = score(v, image[v], onTarget[v].face);
+      const Vec3 goal = averages(v).back();
+      const FacePoint fp = walker.walk(onTarget[v], 0.5 * (goal - image[v]));
+      const Score s = score(v, walker.point(fp), fp.face);
+      if (s.bad <= cur.bad && s.cost < cur.cost) apply(v, fp);
+    }
+  for (int f = 0; f < nf; ++f) {
+    const FaceEval e = evalFace(f, -1, Vec3::Zero(), -1);
+    if (e.degenerate) ++r.degenerateAfter;
+    else if (e.bad) ++r.flippedAfter;
+  }
+  r.movedVertices = static_cast<int>(std::count(moved.begin(), moved.end(), 1));
+  return r;
+}
+
+}  // namespace cbd

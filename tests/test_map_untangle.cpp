@@ -1,0 +1,123 @@
+// The last stage of the cross-map: removing flipped triangles from M_st (map_untangle.h).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "cbd/distortion.h"
+#include "cbd/map_untangle.h"
+#include "support/fixtures.h"
+
+using namespace cbd;
+namespace fx = cbd::fixtures;
+
+namespace {
+
+/// The identity map of a mesh onto itself: every vertex on a face of its own, at its corner.
+void identityMap(const IndexedMesh& m, std::vector<FacePoint>& on, std::vector<Vec3>& image) {
+  on.assign(m.vertexCount(), FacePoint{});
+  image = m.positions;
+  for (int f = 0; f < m.faceCount(); ++f)
+    for (int k = 0; k < 3; ++k) {
+      FacePoint& p = on[m.faces[f][k]];
+      if (p.face >= 0) continue;
+      p.face = f;
+      p.bary = Vec3::Unit(k);
+    }
+}
+
+Vec3 pointOf(const IndexedMesh& m, const FacePoint& p) {
+  const auto& t = m.faces[p.face];
+  return p.bary[0] * m.positions[t[0]] + p.bary[1] * m.positions[t[1]] + p.bary[2] * m.positions[t[2]];
+}
+
+/// Vertices within `rings` edges of v.
+std::vector<int> ringDistance(const IndexedMesh& m, int v) {
+  std::vector<std::vector<int>> nbr(m.vertexCount());
+  for (const auto& t : m.faces)
+    for (int k = 0; k < 3; ++k) nbr[t[k]].push_back(t[(k + 1) % 3]);
+  std::vector<int> d(m.vertexCount(), -1), q{v};
+  d[v] = 0;
+  for (size_t i = 0; i < q.size(); ++i)
+    for (int w : nbr[q[i]])
+      if (d[w] < 0) d[w] = d[q[i]] + 1, q.push_back(w);
+  return d;
+}
+
+}  // namespace
+
+TEST(MapUntangle, IdentityIsLeftUnchanged) {
+  const IndexedMesh m = fx::icosphere(3);
+  std::vector<FacePoint> on;
+  std::vector<Vec3> image;
+  identityMap(m, on, image);
+  const std::vector<Vec3> before = image;
+  const MapUntangleResult r = untangleCrossMap(m, m, std::vector<char>(m.vertexCount(), 0), on, image);
+  ASSERT_TRUE(r.status.ok());
+  EXPECT_EQ(r.flippedBefore, 0);
+  EXPECT_EQ(r.flippedAfter, 0);
+  EXPECT_EQ(r.moves, 0);
+  for (int v = 0; v < m.vertexCount(); ++v) EXPECT_EQ(image[v], before[v]);
+}
+
+TEST(MapUntangle, FoldedVerticesAreUntangledOnTheSurfaceWithAnchorsFixed) {
+  // The identity of a bumpy sphere, with a few vertices thrown across their neighbours: their
+  // triangles fold over. Anchors (every 7th vertex) must stay where they are.
+  IndexedMesh m = fx::icosphere(4);
+  for (auto& p : m.positions) p *= 1.0 + 0.1 * std::sin(5 * p.x()) * std::cos(4 * p.y());
+  std::vector<FacePoint> on;
+  std::vector<Vec3> image;
+  identityMap(m, on, image);
+  std::vector<char> fixed(m.vertexCount(), 0);
+  for (int v = 0; v < m.vertexCount(); v += 7) fixed[v] = 1;
+  const std::vector<int> thrown = {10, 200, 1500};
+  for (int v : thrown) {
+    ASSERT_FALSE(fixed[v]);
+    // A face two rings away from v, on the far side of one of its neighbours.
+    const std::vector<int> d = ringDistance(m, v);
+    int far = -1;
+    for (int f = 0; f < m.faceCount() && far < 0; ++f) {
+      const auto& t = m.faces[f];
+      if (std::min({d[t[0]], d[t[1]], d[t[2]]}) == 1 && std::max({d[t[0]], d[t[1]], d[t[2]]}) == 2) far = f;
+    }
+    ASSERT_GE(far, 0);
+    on[v].face = far;
+    on[v].bary = Vec3(0.2, 0.4, 0.4);
+    image[v] = pointOf(m, on[v]);
+  }
+  const std::vector<Vec3> thrownImage = image;
+  const int flippedBefore = computeDistortion(m, image, m, on).flipped;
+  ASSERT_GT(flippedBefore, 0) << "the fixture must start with flipped triangles";
+
+  const MapUntangleResult r = untangleCrossMap(m, m, fixed, on, image);
+  ASSERT_TRUE(r.status.ok());
+  EXPECT_EQ(r.flippedBefore, flippedBefore);
+  EXPECT_EQ(r.flippedAfter, 0);
+  EXPECT_EQ(r.degenerateAfter, 0);
+  const DistortionMetrics d = computeDistortion(m, image, m, on);
+  EXPECT_EQ(d.flipped, 0);
+  EXPECT_EQ(d.degenerate, 0);
+  EXPECT_GT(r.movedVertices, 0);
+  // Every image on the surface; anchors and vertices far from the damage untouched.
+  std::vector<int> nearest(m.vertexCount(), 1 << 30);
+  for (int v : thrown) {
+    const std::vector<int> dv = ringDistance(m, v);
+    for (int w = 0; w < m.vertexCount(); ++w) nearest[w] = std::min(nearest[w], dv[w]);
+  }
+  int farUnchanged = 0, far = 0;
+  for (int v = 0; v < m.vertexCount(); ++v) {
+    ASSERT_GE(on[v].face, 0);
+    EXPECT_GE(on[v].bary.minCoeff(), -1e-12);
+    EXPECT_NEAR(on[v].bary.sum(), 1.0, 1e-12);
+    EXPECT_LT((pointOf(m, on[v]) - image[v]).norm(), 1e-12);
+    if (fixed[v]) EXPECT_EQ(image[v], thrownImage[v]) << "anchor " << v << " moved";
+    if (nearest[v] > 12) ++far, farUnchanged += image[v] == thrownImage[v];
+  }
+  EXPECT_GT(far, 0);
+  EXPECT_EQ(farUnchanged, far) << "vertices far from every fold moved";
+  // Untangled means back near the identity: the thrown vertices are close to home again.
+  double edge = 0;
+  for (const auto& t : m.faces) edge += (m.positions[t[1]] - m.positions[t[0]]).norm();
+  edge /= m.faceCount();
+  for (int v : thrown) EXPECT_LT((image[v] - m.positions[v]).norm(), 1.5 * edge) << "vertex " << v;
+}
