@@ -391,6 +391,128 @@ MapUntangleResult untangleCrossMap(const IndexedMesh& S, const IndexedMesh& T, c
     }
     badNow = countBad();
   }
+  // 4. What is left: a smooth energy that stays finite on flipped triangles (the regularised
+  //    determinant of Escobar et al. 2003, "Simultaneous untangling and smoothing of
+  //    tetrahedral meshes"), minimised over every vertex within `maxRing` rings of a bad
+  //    triangle at once by Gauss-Seidel sweeps of line-searched gradient steps along the
+  //    surface, so that folds that no single move resolves come undone together. Kept only
+  //    when fewer triangles are bad.
+  for (int pass = 0; pass < options.energyPasses && badNow > 0 && options.energySweeps > 0; ++pass) {
+    std::vector<int> dist(nv, -1), frontier, region;
+    for (int f = 0; f < nf; ++f)
+      if (bad(f))
+        for (int v : S.faces[f])
+          if (dist[v] < 0) dist[v] = 0, frontier.push_back(v);
+    for (int d = 1; d <= options.maxRing; ++d) {
+      std::vector<int> next;
+      for (int v : frontier)
+        for (int w : nbr[v])
+          if (dist[w] < 0) dist[w] = d, next.push_back(w);
+      frontier.swap(next);
+    }
+    // Signed image area along the target normal, per unit of (globally scaled) source area.
+    auto signedRatio = [&](int f, int v, const Vec3& x, int g) {
+      const auto& t = S.faces[f];
+      Vec3 p[3];
+      int on[3];
+      for (int k = 0; k < 3; ++k) p[k] = t[k] == v ? x : image[t[k]], on[k] = t[k] == v ? g : onTarget[t[k]].face;
+      const Vec3 c = (p[1] - p[0]).cross(p[2] - p[0]);
+      Vec3 nt = targetNormalSum(normal, on[0], on[1], on[2]);
+      nt = nt.norm() > 0 ? Vec3(nt.normalized()) : (c.norm() > 0 ? Vec3(c.normalized()) : Vec3::UnitZ());
+      const double sa = (S.positions[t[1]] - S.positions[t[0]]).cross(S.positions[t[2]] - S.positions[t[0]]).norm();
+      return c.dot(nt) / (sa * areaScale);
+    };
+    double delta = 0;
+    auto faceEnergy = [&](int f, int v, const Vec3& x, int g) {
+      const auto& t = S.faces[f];
+      Vec3 p[3];
+      for (int k = 0; k < 3; ++k) p[k] = t[k] == v ? x : image[t[k]];
+      const double d = signedRatio(f, v, x, g);
+      const double h = 0.5 * (d + std::sqrt(d * d + 4.0 * delta * delta));
+      if (!(h > 0)) return 1e12;
+      // |J|_F^2 of the map from the source triangle onto the image, in their planes.
+      const Vec3 e = S.positions[t[1]] - S.positions[t[0]], ef = S.positions[t[2]] - S.positions[t[0]];
+      const Vec3 ie = p[1] - p[0], ief = p[2] - p[0];
+      const double sa = e.norm(), sbx = ef.dot(e) / sa, sby = e.cross(ef).norm() / sa;
+      const double ia = ie.norm();
+      if (!(ia > 0)) return 1e12;
+      const double ibx = ief.dot(ie) / ia, iby = ie.cross(ief).norm() / ia;
+      const double j11 = ia / sa, j12 = (ibx - ia * sbx / sa) / sby, j22 = iby / sby;
+      const double frob = (j11 * j11 + j12 * j12 + j22 * j22) / areaScale;
+      return frob / (2.0 * h) + 0.5 * (h + 1.0 / h);
+    };
+    auto vertexEnergy = [&](int v, const Vec3& x, int g) {
+      double e = 0;
+      for (int f : facesOf[v]) e += faceEnergy(f, v, x, g);
+      return e;
+    };
+    // Each connected region (vertices within the rings, bad triangles' own first) on its own.
+    bool improved = false;
+    std::vector<char> seen(nv, 0);
+    for (int seed = 0; seed < nv; ++seed) {
+      if (seen[seed] || dist[seed] < 0 || !movable(seed)) continue;
+      region.assign(1, seed);
+      seen[seed] = 1;
+      for (size_t i = 0; i < region.size(); ++i)
+        for (int w : nbr[region[i]])
+          if (!seen[w] && dist[w] >= 0 && movable(w)) seen[w] = 1, region.push_back(w);
+      std::vector<int> faces;
+      for (int v : region) faces.insert(faces.end(), facesOf[v].begin(), facesOf[v].end());
+      std::sort(faces.begin(), faces.end());
+      faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
+      auto regionBad = [&] {
+        int n = 0;
+        for (int f : faces) n += bad(f);
+        return n;
+      };
+      const int before = regionBad();
+      if (before == 0) continue;
+      std::vector<FacePoint> keepFp;
+      std::vector<Vec3> keepX;
+      for (int v : region) keepFp.push_back(onTarget[v]), keepX.push_back(image[v]);
+      for (int sweep = 0; sweep < options.energySweeps; ++sweep) {
+        double dmin = 1e300;
+        for (int f : faces) dmin = std::min(dmin, signedRatio(f, -1, Vec3::Zero(), -1));
+        const double eps = 1e-3;
+        delta = dmin < eps ? std::sqrt(eps * (eps - dmin)) : 0.0;
+        for (int v : region) {
+          const double e0 = vertexEnergy(v, image[v], onTarget[v].face);
+          double len = 0;
+          for (int w : nbr[v]) len += (image[w] - image[v]).norm();
+          len /= static_cast<double>(nbr[v].size());
+          if (!(len > 0)) continue;
+          const Vec3& n = normal[onTarget[v].face];
+          const Vec3 ax = (std::abs(n.x()) < 0.9 ? Vec3::UnitX() : Vec3::UnitY()).cross(n).normalized(), ay = n.cross(ax);
+          const double hstep = 1e-4 * len;
+          auto along = [&](const Vec3& d) {
+            const FacePoint fp = walker.walk(onTarget[v], d);
+            return vertexEnergy(v, walker.point(fp), fp.face);
+          };
+          const Vec3 grad = (along(hstep * ax) - along(-hstep * ax)) / (2 * hstep) * ax +
+                            (along(hstep * ay) - along(-hstep * ay)) / (2 * hstep) * ay;
+          if (!(grad.norm() > 0)) continue;
+          const Vec3 dir = -grad.normalized();
+          for (double step = 0.5 * len; step > 1e-3 * len; step *= 0.5) {
+            const FacePoint fp = walker.walk(onTarget[v], step * dir);
+            if (vertexEnergy(v, walker.point(fp), fp.face) < e0) {
+              onTarget[v] = fp;
+              image[v] = walker.point(fp);
+              break;
+            }
+          }
+        }
+      }
+      if (regionBad() < before) {
+        improved = true;
+        for (size_t i = 0; i < region.size(); ++i)
+          if (image[region[i]] != keepX[i]) moved[region[i]] = 1, ++r.moves;
+      } else {
+        for (size_t i = 0; i < region.size(); ++i) onTarget[region[i]] = keepFp[i], image[region[i]] = keepX[i];
+      }
+    }
+    badNow = countBad();
+    if (!improved) break;
+  }
   // Polish: sweeps over every vertex towards its neighbours' weighted average, each move kept
   // only when it lowers the distortion of the vertex's triangles and adds no bad one.
   for (int sweep = 0; sweep < options.polishSweeps; ++sweep)

@@ -10,11 +10,18 @@
 /// chord triangle can face the wrong way: a flip (`imageFlipped`). This stage moves the images
 /// of the vertices of such triangles over the target surface (straight walks across target
 /// faces, so an image never leaves the surface) until no triangle of theirs is flipped:
-/// first local moves towards the average of the neighbours' images that reduce the vertex's
-/// flipped triangles or raise their worst normal agreement, then, where that stalls, a few
-/// sweeps of relaxation over a growing ring around what is still flipped that never add a
-/// flip. Anchors never move, and a vertex whose neighbourhood has no flip is left as it is,
-/// so a map without flips is returned unchanged (an identity map stays the identity).
+/// 1. local moves of a flipped triangle's vertices (towards averages of the neighbours'
+///    images, across opposite edges, on rings of directions) that reduce the vertex's bad
+///    triangles without leaving one distorted beyond `maxDistortion`;
+/// 2. relaxation of a growing ring around what is left that never adds a bad triangle;
+/// 3. whole-region convex-combination relaxation of folds, kept when it helps;
+/// 4. for what is still left, Gauss-Seidel minimisation of a smooth energy that stays finite
+///    on flipped triangles (conformal + area terms over the regularised signed area of
+///    Escobar et al. 2003, "Simultaneous untangling and smoothing of tetrahedral meshes"),
+///    over each connected region of rings at once, kept when it has fewer bad triangles;
+/// 5. `polishSweeps` sweeps over every vertex that only lower distortion, never adding a flip.
+/// Anchors never move; a map without flips and without distortion to lower (the identity) is
+/// returned unchanged.
 
 #include <vector>
 
@@ -35,6 +42,10 @@ struct MapUntangleOptions {
   /// Sweeps over all vertices at the end that only lower distortion and never add a flip
   /// (0: only the neighbourhoods of flips are touched).
   int polishSweeps = 5;
+  /// Gauss-Seidel sweeps of the smooth untangling energy over the rings of what local moves
+  /// left flipped (0: none).
+  int energySweeps = 30;
+  int energyPasses = 4;   ///< repeats of those sweeps (regions taken anew) while flips go down
 };
 
 /// What `untangleCrossMap` did.
