@@ -172,8 +172,12 @@ cbd::Status loadPair(const RunArgs& a, cbd::LoadedInput& in, std::vector<int>& s
 json layoutJson(const cbd::LayoutPair& p) {
   json l = {{"edges", p.source.edges.size()},
             {"patches", p.source.patches.size()},
-            {"multi_linkages", p.source.multipleLinkages()}};
+            {"multi_linkages", p.source.multipleLinkages()},
+            {"detour", p.detour}};
   if (p.method == cbd::LayoutMethod::Voronoi) {
+    // "diagram": whose Voronoi diagram gave the layout (the target's when the source's detoured).
+    l["diagram"] = p.reversed ? "target" : "source";
+    if (p.triedReverse) l["other_direction_detour"] = p.reverseDetour;
     l["cut_paths"] = p.sourceStats.cutPaths;
     l["triangulation_paths"] = p.sourceStats.triangulationPaths;
     l["removed_paths"] = p.sourceStats.removedPaths;
@@ -200,8 +204,12 @@ void printLayout(const cbd::LayoutPair& p) {
     std::printf("layout  voronoi: %zu edges (%d across Voronoi cuts, %d triangulating), %zu patches, %d multiple linkages\n",
                 p.source.edges.size(), p.sourceStats.cutPaths - p.sourceStats.removedPaths,
                 p.sourceStats.triangulationPaths, p.source.patches.size(), p.source.multipleLinkages());
-    std::printf("        target: %d paths inside the two clusters, %d in the whole region\n",
-                p.targetStats.embeddedInClusters, p.targetStats.embeddedInRegion);
+    std::printf("        %s: %d paths inside the two clusters, %d in the whole region; detour %.2f\n",
+                p.reversed ? "traced on the source" : "target", p.targetStats.embeddedInClusters,
+                p.targetStats.embeddedInRegion, p.detour);
+    if (p.reversed)
+      std::printf("        (the layout traced from the source's diagram detoured by %.2f: this one comes from the "
+                  "target's Voronoi diagram)\n", p.reverseDetour);
   } else {
     const auto& g = p.greedyStats;
     std::printf("layout  greedy: %zu edges, %zu patches; %d candidate pairs, %d traced, %d accepted, %d rejected, "

@@ -1,5 +1,6 @@
 #include "cbd/pipeline.h"
 
+#include <algorithm>
 #include <chrono>
 #include <thread>
 
@@ -11,6 +12,47 @@ double seconds(std::chrono::steady_clock::time_point t0) {
 }  // namespace
 
 const char* layoutMethodName(LayoutMethod m) { return m == LayoutMethod::Voronoi ? "voronoi" : "greedy"; }
+
+double lengthDetour(const Layout& source, const Layout& target) {
+  std::vector<double> ratio;
+  for (size_t e = 0; e < source.edges.size() && e < target.edges.size(); ++e)
+    if (source.edges[e].length > 0 && target.edges[e].length > 0) ratio.push_back(target.edges[e].length / source.edges[e].length);
+  if (ratio.empty()) return 1.0;
+  std::vector<double> sorted = ratio;
+  std::nth_element(sorted.begin(), sorted.begin() + sorted.size() / 2, sorted.end());
+  const double median = sorted[sorted.size() / 2];
+  double sum = 0;
+  for (double x : ratio) sum += std::max(x / median, median / x);
+  return sum / static_cast<double>(ratio.size());
+}
+
+namespace {
+
+/// The Voronoi method with `from` as the surface whose diagram gives the layout.
+LayoutPair voronoiLayouts(const IndexedMesh& from, const std::vector<int>& fa, const IndexedMesh& onto,
+                          const std::vector<int>& ta, int euler, const CrossParameterizationOptions& options) {
+  LayoutPair p;
+  p.method = LayoutMethod::Voronoi;
+  SourceLayoutOptions so;
+  so.edgeNodes = options.edgeNodes;
+  p.sourceStats = buildSourceLayout(from, fa, so);
+  p.times.voronoi = p.sourceStats.voronoiSeconds;
+  p.times.sourceLayout = p.sourceStats.layoutSeconds;
+  if (!p.sourceStats.status) return p.status = p.sourceStats.status, p;
+  if (const LayoutCheck c = validateLayout(p.sourceStats.layout, euler); !c.status) return p.status = c.status, p;
+  TargetLayoutOptions to;
+  to.edgeNodes = options.edgeNodes;
+  p.targetStats = buildTargetLayout(p.sourceStats.layout, onto, ta, to);
+  p.times.voronoi += p.targetStats.voronoiSeconds;
+  p.times.targetLayout = p.targetStats.layoutSeconds;
+  if (!p.targetStats.status) return p.status = p.targetStats.status, p;
+  p.source = std::move(p.sourceStats.layout);
+  p.target = std::move(p.targetStats.layout);
+  p.detour = lengthDetour(p.source, p.target);
+  return p;
+}
+
+}  // namespace
 
 LayoutPair buildLayouts(const IndexedMesh& source, const std::vector<int>& sa, const IndexedMesh& target,
                         const std::vector<int>& ta, int euler, const CrossParameterizationOptions& options) {
@@ -24,26 +66,37 @@ LayoutPair buildLayouts(const IndexedMesh& source, const std::vector<int>& sa, c
     if (!p.greedyStats.status) return p.status = p.greedyStats.status, p;
     p.source = std::move(p.greedyStats.source);
     p.target = std::move(p.greedyStats.target);
+    p.detour = lengthDetour(p.source, p.target);
+    if (const LayoutCheck c = validateLayout(p.source, euler); !c.status) return p.status = c.status, p;
   } else {
-    SourceLayoutOptions so;
-    so.edgeNodes = options.edgeNodes;
-    p.sourceStats = buildSourceLayout(source, sa, so);
-    p.times.voronoi = p.sourceStats.voronoiSeconds;
-    p.times.sourceLayout = p.sourceStats.layoutSeconds;
-    if (!p.sourceStats.status) return p.status = p.sourceStats.status, p;
-    if (const LayoutCheck c = validateLayout(p.sourceStats.layout, euler); !c.status) return p.status = c.status, p;
-    TargetLayoutOptions to;
-    to.edgeNodes = options.edgeNodes;
-    p.targetStats = buildTargetLayout(p.sourceStats.layout, target, ta, to);
-    p.times.voronoi += p.targetStats.voronoiSeconds;
-    p.times.targetLayout = p.targetStats.layoutSeconds;
-    if (!p.targetStats.status) return p.status = p.targetStats.status, p;
-    p.source = std::move(p.sourceStats.layout);
-    p.target = std::move(p.targetStats.layout);
+    p = voronoiLayouts(source, sa, target, ta, euler, options);
+    // A target layout whose paths are far longer than their source counterparts has detoured
+    // around anchors (a twist): the target's own Voronoi diagram may be the better cue.
+    const bool retry = options.reverseDetour > 0 && (!p.status || p.detour > options.reverseDetour);
+    if (retry) {
+      const StageTimes first = p.times;
+      LayoutPair q = voronoiLayouts(target, ta, source, sa, euler, options);
+      const StageTimes second = q.times;
+      if (q.status && (!p.status || q.detour < p.detour)) {
+        const double forwardDetour = p.status ? p.detour : 0.0;
+        p = std::move(q);
+        std::swap(p.source, p.target);
+        p.reversed = true;
+        p.reverseDetour = forwardDetour;
+        p.detour = lengthDetour(p.source, p.target);
+      } else {
+        p.reverseDetour = q.status ? lengthDetour(q.target, q.source) : 0.0;
+      }
+      p.triedReverse = true;
+      p.times.voronoi = first.voronoi + second.voronoi;
+      p.times.sourceLayout = first.sourceLayout + second.sourceLayout;
+      p.times.targetLayout = first.targetLayout + second.targetLayout;
+    }
+    if (!p.status) return p;
   }
-  // The Voronoi source layout was checked before the target was traced from it; both builders
-  // end with checkIsomorphic.
-  if (p.method == LayoutMethod::Greedy)
+  // The Voronoi layouts were checked as they were built (the layout the diagram gave before
+  // the other was traced from it); both builders end with checkIsomorphic.
+  if (p.method == LayoutMethod::Voronoi && p.reversed)
     if (const LayoutCheck c = validateLayout(p.source, euler); !c.status) return p.status = c.status, p;
   if (const LayoutCheck c = validateLayout(p.target, euler); !c.status) return p.status = c.status, p;
   return p;

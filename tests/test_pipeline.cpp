@@ -1,0 +1,96 @@
+// The whole pipeline (pipeline.h): the choice of the Voronoi diagram that gives the layout, on
+// a synthetic pair and on the bundled real pair whose forward layout twists.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+
+#include "cbd/anchor_sampling.h"
+#include "cbd/pipeline.h"
+#include "cbd/validate_input.h"
+#include "support/fixtures.h"
+
+using namespace cbd;
+namespace fx = cbd::fixtures;
+
+TEST(LengthDetour, OneWhenEveryPathIsScaledAlike) {
+  const IndexedMesh s = fx::icosphere(3);
+  IndexedMesh t = s;
+  for (auto& p : t.positions) p *= 2.0;
+  const std::vector<int> a = farthestPointSampling(s, 12);
+  SourceLayoutResult src = buildSourceLayout(s, a);
+  ASSERT_TRUE(src.status.ok()) << src.status.message;
+  EXPECT_DOUBLE_EQ(lengthDetour(src.layout, src.layout), 1.0);
+  Layout scaled = src.layout;
+  for (auto& e : scaled.edges) e.length *= 2.0;
+  EXPECT_NEAR(lengthDetour(src.layout, scaled), 1.0, 1e-12);
+  // One path twice as long as the others (relative) is a detour of (n - 1 + 2) / n.
+  scaled.edges[0].length *= 2.0;
+  const double n = static_cast<double>(scaled.edges.size());
+  EXPECT_NEAR(lengthDetour(src.layout, scaled), (n + 1.0) / n, 1e-12);
+  // The same layout traced on the scaled sphere: the same paths up to ties of the search.
+  const TargetLayoutResult tgt = buildTargetLayout(src.layout, t, a);
+  ASSERT_TRUE(tgt.status.ok()) << tgt.status.message;
+  EXPECT_NEAR(lengthDetour(src.layout, tgt.layout), 1.0, 1e-2);
+}
+
+TEST(Pipeline, SphereToEllipsoidKeepsTheSourceDiagram) {
+  const IndexedMesh s = fx::icosphere(3);
+  IndexedMesh t = fx::icosphere(4);
+  const std::vector<int> sa = farthestPointSampling(s, 20);
+  std::vector<int> ta;
+  for (int v : sa) ta.push_back(fx::nearestVertex(t, s.positions[v]));
+  for (auto& p : t.positions) p = Vec3(1.6 * p.x(), p.y(), 0.8 * p.z());
+  const LayoutPair p = buildLayouts(s, sa, t, ta, 2, {});
+  ASSERT_TRUE(p.status.ok()) << p.status.message;
+  EXPECT_FALSE(p.triedReverse) << "detour " << p.detour;
+  EXPECT_FALSE(p.reversed);
+  EXPECT_LT(p.detour, 1.5);
+}
+
+TEST(Pipeline, CowToBullTakesTheBullsDiagramWhenTheCowsTwists) {
+  // The bundled pair, cow -> bull with adaptive edge nodes: the layout traced from the cow's
+  // Voronoi diagram turns the bull's head (its paths detour around the neck anchors); the one
+  // from the bull's diagram does not, and the map it gives has no flipped triangle.
+  const std::string meshes = std::string(CBD_CGAL_MESHES);
+  if (!std::filesystem::exists(meshes + "/cow.off")) GTEST_SKIP() << "scripts/setup.sh unpacks " << meshes;
+  LoadedInput in;
+  loadAndValidate({meshes + "/cow.off", meshes + "/bull.off", std::string(CBD_EXAMPLES) + "/cow_picked_points.pp",
+                   std::string(CBD_EXAMPLES) + "/bull_picked_points.pp"},
+                  {}, in);
+  ASSERT_TRUE(in.report.status.ok()) << in.report.status.message;
+  std::vector<int> sa, ta;
+  for (const auto& a : in.report.anchors.source) sa.push_back(a.vertex);
+  for (const auto& a : in.report.anchors.target) ta.push_back(a.vertex);
+  const int chi = in.report.source.eulerCharacteristic;
+
+  CrossParameterizationOptions forwardOnly;
+  forwardOnly.reverseDetour = 0;
+  const LayoutPair forward = buildLayouts(in.source, sa, in.target, ta, chi, forwardOnly);
+  ASSERT_TRUE(forward.status.ok()) << forward.status.message;
+  EXPECT_FALSE(forward.triedReverse);
+  EXPECT_GT(forward.detour, 2.0);
+
+  const CrossParameterizationResult r = crossParameterize(in.source, sa, in.target, ta, chi, {});
+  ASSERT_TRUE(r.status.ok()) << r.status.message;
+  const LayoutPair& p = r.layouts;
+  EXPECT_TRUE(p.triedReverse);
+  EXPECT_TRUE(p.reversed);
+  EXPECT_NEAR(p.reverseDetour, forward.detour, 1e-12);
+  EXPECT_LT(p.detour, 1.5);
+  EXPECT_NEAR(p.detour, lengthDetour(p.source, p.target), 1e-12);
+  // The layouts kept are on the right surfaces, valid and isomorphic.
+  EXPECT_EQ(p.source.mesh.inputVertexCount(), in.source.vertexCount());
+  EXPECT_EQ(p.target.mesh.inputVertexCount(), in.target.vertexCount());
+  EXPECT_TRUE(validateLayout(p.source, chi).status.ok());
+  EXPECT_TRUE(validateLayout(p.target, chi).status.ok());
+  EXPECT_TRUE(checkIsomorphic(p.source, p.target).ok());
+  for (size_t k = 0; k < sa.size(); ++k) {
+    EXPECT_EQ(p.source.anchorVertices[k], sa[k]);
+    EXPECT_EQ(p.target.anchorVertices[k], ta[k]);
+    EXPECT_EQ(r.map.sourceImage[sa[k]], in.target.positions[ta[k]]);
+  }
+  EXPECT_EQ(r.metrics.flipped, 0);
+  EXPECT_EQ(r.metrics.degenerate, 0);
+  EXPECT_TRUE(std::isfinite(r.metrics.eL2) && r.metrics.eL2 >= 1.0);
+}
