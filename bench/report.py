@@ -176,7 +176,9 @@ trial and error.
 
 Layout = Voronoi clusters + source layout + target layout (greedy: all-pairs paths + trial and
 error + completion + flipping, both surfaces). Total adds the patch parameterizations, the
-composition and the metrics. E_L2 is Sander et al.'s L2 stretch normalised so that 1 is
+composition, the untangling of M_st and M_ts, and the metrics. Flipped counts M_st's triangles
+facing against the target surface after untangling (the same untangling for every method), in
+brackets before it (the composed map as it is). E_L2 is Sander et al.'s L2 stretch normalised so that 1 is
 optimal (the issue's definition); E_ang is the area-weighted (σ1/σ2 + σ2/σ1)/2 − 1 (0 optimal).
 
 ![E_ang](results/plots/e_ang.png) ![E_L2](results/plots/e_l2.png)

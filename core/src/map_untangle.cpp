@@ -268,8 +268,9 @@ MapUntangleResult untangleCrossMap(const IndexedMesh& S, const IndexedMesh& T, c
                                     onTarget[t[1]].face, onTarget[t[2]].face);
   }
   int badNow = countBad();
+  // Stages 1-4 with a bound `cap` on the distortion a local move may leave behind.
+  auto untangleWith = [&](const double cap) {
   int ring = 0;
-  const double cap = options.maxDistortion;
   int stalled = 0;
   for (int round = 0; round < options.maxRounds && badNow > 0; ++round) {
     // 1. Local moves of the vertices of bad triangles.
@@ -513,6 +514,12 @@ MapUntangleResult untangleCrossMap(const IndexedMesh& S, const IndexedMesh& T, c
     badNow = countBad();
     if (!improved) break;
   }
+  };
+  untangleWith(options.maxDistortion);
+  // Where flips survive the bound, a last attempt with a looser one (the energy of stage 4 and
+  // the polish then spread the distortion such moves leave behind).
+  for (double f = options.lastResortFactor; badNow > 0 && f > 1 && f <= options.lastResortFactor * options.lastResortFactor; f *= options.lastResortFactor)
+    untangleWith(options.maxDistortion * f);
   // Polish: sweeps over every vertex towards its neighbours' weighted average, each move kept
   // only when it lowers the distortion of the vertex's triangles and adds no bad one.
   for (int sweep = 0; sweep < options.polishSweeps; ++sweep)

@@ -19,6 +19,7 @@
 ///    on flipped triangles (conformal + area terms over the regularised signed area of
 ///    Escobar et al. 2003, "Simultaneous untangling and smoothing of tetrahedral meshes"),
 ///    over each connected region of rings at once, kept when it has fewer bad triangles;
+/// then, if flips are left, stages 1-4 once more with a looser bound (`lastResortFactor`);
 /// 5. `polishSweeps` sweeps over every vertex that only lower distortion, never adding a flip.
 /// Anchors never move; a map without flips and without distortion to lower (the identity) is
 /// returned unchanged.
@@ -46,6 +47,8 @@ struct MapUntangleOptions {
   /// left flipped (0: none).
   int energySweeps = 30;
   int energyPasses = 4;   ///< repeats of those sweeps (regions taken anew) while flips go down
+  /// When flips are left, stages 1-4 once more with `maxDistortion` times this (<= 1: not).
+  double lastResortFactor = 10.0;
 };
 
 /// What `untangleCrossMap` did.
