@@ -129,7 +129,8 @@ struct Score {
 
 /// Angle distortion (s1/s2 + s2/s1)/2 - 1 of the map from triangle (s0,s1,s2) to (i0,i1,i2),
 /// both in their own planes: |J|_F^2 / (2 |det J|) - 1.
-double angleDistortion(const Vec3& s0, const Vec3& s1, const Vec3& s2, const Vec3& i0, const Vec3& i1, const Vec3& i2) {
+double angleDistortion(const Vec3& s0, const Vec3& s1, const Vec3& s2, const Vec3& i0, const Vec3& i1, const Vec3& i2,
+                       double* frobenius = nullptr) {
   auto frame = [](const Vec3& p0, const Vec3& p1, const Vec3& p2, double& a, double& bx, double& by) {
     const Vec3 e = p1 - p0, f = p2 - p0;
     a = e.norm();
@@ -140,9 +141,11 @@ double angleDistortion(const Vec3& s0, const Vec3& s1, const Vec3& s2, const Vec
   double sa, sbx, sby, ia, ibx, iby;
   frame(s0, s1, s2, sa, sbx, sby);
   frame(i0, i1, i2, ia, ibx, iby);
+  if (frobenius) *frobenius = 1e12;
   if (!(sa > 0 && sby > 0 && ia > 0 && iby > 0)) return 1e12;
   // J = I * S^-1 with S = [sa sbx; 0 sby], I = [ia ibx; 0 iby].
   const double j11 = ia / sa, j12 = (ibx - ia * sbx / sa) / sby, j22 = iby / sby;
+  if (frobenius) *frobenius = j11 * j11 + j12 * j12 + j22 * j22;
   return (j11 * j11 + j12 * j12 + j22 * j22) / (2.0 * j11 * j22) - 1.0;
 }
 
@@ -518,8 +521,34 @@ MapUntangleResult untangleCrossMap(const IndexedMesh& S, const IndexedMesh& T, c
   untangleWith(options.maxDistortion);
   // Where flips survive the bound, a last attempt with a looser one (the energy of stage 4 and
   // the polish then spread the distortion such moves leave behind).
-  for (double f = options.lastResortFactor; badNow > 0 && f > 1 && f <= options.lastResortFactor * options.lastResortFactor; f *= options.lastResortFactor)
+  // Each such attempt is kept only when it does not raise the map's L2 stretch by more than
+  // `maxStretchGrowth` (the metric weighs the stretched triangles such moves leave by area).
+  auto l2Stretch = [&] {
+    double sumAs = 0, sumAt = 0, l2 = 0;
+    for (int f = 0; f < nf; ++f) {
+      const auto& t = S.faces[f];
+      const Vec3 &s0 = S.positions[t[0]], &s1 = S.positions[t[1]], &s2 = S.positions[t[2]];
+      const Vec3 &i0 = image[t[0]], &i1 = image[t[1]], &i2 = image[t[2]];
+      const double as = 0.5 * (s1 - s0).cross(s2 - s0).norm(), at = 0.5 * (i1 - i0).cross(i2 - i0).norm();
+      double frob = 0;
+      angleDistortion(s0, s1, s2, i0, i1, i2, &frob);
+      if (!(at > 0) || frob >= 1e12) continue;
+      sumAs += as, sumAt += at, l2 += at * 0.5 * frob;
+    }
+    return sumAt > 0 ? std::sqrt(l2 / sumAt) * std::sqrt(sumAs / sumAt) : 0.0;
+  };
+  for (double f = options.lastResortFactor; badNow > 0 && f > 1 && f <= options.lastResortFactor * options.lastResortFactor;
+       f *= options.lastResortFactor) {
+    const std::vector<FacePoint> keepFp = onTarget;
+    const std::vector<Vec3> keepX = image;
+    const std::vector<char> keepMoved = moved;
+    const int keepMoves = r.moves, keepBad = badNow;
+    const double before = l2Stretch();
     untangleWith(options.maxDistortion * f);
+    if (badNow < keepBad && l2Stretch() <= options.maxStretchGrowth * before) continue;
+    onTarget = keepFp, image = keepX, moved = keepMoved, r.moves = keepMoves, badNow = keepBad;
+    break;
+  }
   // Polish: sweeps over every vertex towards its neighbours' weighted average, each move kept
   // only when it lowers the distortion of the vertex's triangles and adds no bad one.
   for (int sweep = 0; sweep < options.polishSweeps; ++sweep)

@@ -47,8 +47,11 @@ struct MapUntangleOptions {
   /// left flipped (0: none).
   int energySweeps = 30;
   int energyPasses = 4;   ///< repeats of those sweeps (regions taken anew) while flips go down
-  /// When flips are left, stages 1-4 once more with `maxDistortion` times this (<= 1: not).
+  /// When flips are left, stages 1-4 once more with `maxDistortion` times this, then times its
+  /// square (<= 1: not)...
   double lastResortFactor = 10.0;
+  /// ... each such attempt kept only if the map's L2 stretch grows by at most this factor.
+  double maxStretchGrowth = 1.05;
 };
 
 /// What `untangleCrossMap` did.
