@@ -461,7 +461,7 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(0, 1000));
   cmdMap->add_flag("--no-untangle", map.noUntangle,
                    "keep the composed map as it is: do not move the images of the vertices of flipped M_st / M_ts "
-                   "triangles over the target (the default removes most flips and lowers E_ang; see README)");
+                   "triangles over the target (the default removes most flips, then polishes the map; see README)");
   cmdMap->add_option("--morph", map.morph, "also write K meshes OUT/morph_000.ply ... blending the source (fitted onto the target by its anchors) into M_st")
       ->check(CLI::Range(2, 1000));
 

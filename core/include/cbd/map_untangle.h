@@ -9,7 +9,7 @@
 /// parameterization Jacobians differ a lot, or straddles a sharp crease of the target, the
 /// chord triangle can face the wrong way: a flip (`imageFlipped`). This stage moves the images
 /// of the vertices of such triangles over the target surface (straight walks across target
-/// faces, so an image never leaves the surface) until no triangle of theirs is flipped:
+/// faces, so an image never leaves the surface) to unflip them:
 /// 1. local moves of a flipped triangle's vertices (towards averages of the neighbours'
 ///    images, across opposite edges, on rings of directions) that reduce the vertex's bad
 ///    triangles without leaving one distorted beyond `maxDistortion`;
@@ -19,7 +19,8 @@
 ///    on flipped triangles (conformal + area terms over the regularised signed area of
 ///    Escobar et al. 2003, "Simultaneous untangling and smoothing of tetrahedral meshes"),
 ///    over each connected region of rings at once, kept when it has fewer bad triangles;
-/// then, if flips are left, stages 1-4 once more with a looser bound (`lastResortFactor`);
+///    then, if flips are left, stages 1-4 once more with looser bounds (`lastResortFactor`),
+///    each attempt kept only if E_L2 grows by at most `maxStretchGrowth`;
 /// 5. `polishSweeps` sweeps over every vertex that only lower distortion, never adding a flip.
 /// Anchors never move; a map without flips and without distortion to lower (the identity) is
 /// returned unchanged.
