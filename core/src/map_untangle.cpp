@@ -263,6 +263,64 @@ MapUntangleResult untangleCrossMap(const IndexedMesh& S, const IndexedMesh& T, c
     ++r.moves;
   };
 
+  // Source-edge distance of every vertex from the vertices of a bad triangle, up to `rings`
+  // (-1 beyond).
+  auto ringsAroundBad = [&](int rings) {
+    std::vector<int> dist(nv, -1), frontier;
+    for (int f = 0; f < nf; ++f)
+      if (bad(f))
+        for (int v : S.faces[f])
+          if (dist[v] < 0) dist[v] = 0, frontier.push_back(v);
+    for (int d = 1; d <= rings; ++d) {
+      std::vector<int> next;
+      for (int v : frontier)
+        for (int w : nbr[v])
+          if (dist[w] < 0) dist[w] = d, next.push_back(w);
+      frontier.swap(next);
+    }
+    return dist;
+  };
+  // Each connected region of the movable vertices with 0 <= dist < limit that touches a bad
+  // triangle is handed to `relax(region, faces)` (its vertices, and every triangle they are
+  // on); the result is kept when those triangles have fewer bad ones than before, else undone.
+  // True when some region was kept.
+  auto relaxRegions = [&](const std::vector<int>& dist, int limit, auto&& relax) {
+    bool improved = false;
+    std::vector<char> seen(nv, 0);
+    auto inside = [&](int v) { return dist[v] >= 0 && dist[v] < limit && movable(v); };
+    for (int seed = 0; seed < nv; ++seed) {
+      if (seen[seed] || !inside(seed)) continue;
+      std::vector<int> region{seed};
+      seen[seed] = 1;
+      for (size_t i = 0; i < region.size(); ++i)
+        for (int w : nbr[region[i]])
+          if (!seen[w] && inside(w)) seen[w] = 1, region.push_back(w);
+      std::vector<int> faces;
+      for (int v : region) faces.insert(faces.end(), facesOf[v].begin(), facesOf[v].end());
+      std::sort(faces.begin(), faces.end());
+      faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
+      auto regionBad = [&] {
+        int n = 0;
+        for (int f : faces) n += bad(f);
+        return n;
+      };
+      const int before = regionBad();
+      if (before == 0) continue;
+      std::vector<FacePoint> keepFp;
+      std::vector<Vec3> keepX;
+      for (int v : region) keepFp.push_back(onTarget[v]), keepX.push_back(image[v]);
+      relax(region, faces);
+      if (regionBad() < before) {
+        improved = true;
+        for (size_t i = 0; i < region.size(); ++i)
+          if (image[region[i]] != keepX[i]) moved[region[i]] = 1, ++r.moves;
+      } else {
+        for (size_t i = 0; i < region.size(); ++i) onTarget[region[i]] = keepFp[i], image[region[i]] = keepX[i];
+      }
+    }
+    return improved;
+  };
+
   r.flippedBefore = 0;
   for (int f = 0; f < nf; ++f) {
     const auto& t = S.faces[f];
@@ -334,18 +392,7 @@ MapUntangleResult untangleCrossMap(const IndexedMesh& S, const IndexedMesh& T, c
     else if (ring < options.maxRing) ++ring;
     else if (++stalled >= 2) break;  // the widest ring did not help twice: nothing moves any more
     badNow = after;
-    std::vector<int> dist(nv, -1), frontier;
-    for (int f = 0; f < nf; ++f)
-      if (bad(f))
-        for (int v : S.faces[f])
-          if (dist[v] < 0) dist[v] = 0, frontier.push_back(v);
-    for (int d = 1; d <= ring; ++d) {
-      std::vector<int> next;
-      for (int v : frontier)
-        for (int w : nbr[v])
-          if (dist[w] < 0) dist[w] = d, next.push_back(w);
-      frontier.swap(next);
-    }
+    const std::vector<int> dist = ringsAroundBad(ring);
     for (int sweep = 0; sweep < 3; ++sweep)
       for (int v = 0; v < nv; ++v) {
         if (dist[v] < 0 || !movable(v)) continue;
@@ -359,40 +406,13 @@ MapUntangleResult untangleCrossMap(const IndexedMesh& S, const IndexedMesh& T, c
     //    connected region within the ring is relaxed as a whole, its outer ring fixed (a
     //    convex-combination map of a disk, as Tutte's), and kept only when it has fewer bad
     //    triangles than before.
-    std::vector<char> seen(nv, 0);
-    for (int seed = 0; seed < nv; ++seed) {
-      if (seen[seed] || dist[seed] < 0 || dist[seed] >= ring || !movable(seed)) continue;
-      std::vector<int> region{seed};
-      seen[seed] = 1;
-      for (size_t i = 0; i < region.size(); ++i)
-        for (int w : nbr[region[i]])
-          if (!seen[w] && dist[w] >= 0 && dist[w] < ring && movable(w)) seen[w] = 1, region.push_back(w);
-      std::vector<int> faces;
-      for (int v : region) faces.insert(faces.end(), facesOf[v].begin(), facesOf[v].end());
-      std::sort(faces.begin(), faces.end());
-      faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
-      auto regionBad = [&] {
-        int n = 0;
-        for (int f : faces) n += bad(f);
-        return n;
-      };
-      const int before = regionBad();
-      if (before == 0) continue;
-      std::vector<FacePoint> keepFp;
-      std::vector<Vec3> keepX;
-      for (int v : region) keepFp.push_back(onTarget[v]), keepX.push_back(image[v]);
+    relaxRegions(dist, ring, [&](const std::vector<int>& region, const std::vector<int>&) {
       for (int sweep = 0; sweep < 40; ++sweep)
         for (int v : region) {
           onTarget[v] = walker.walk(onTarget[v], averages(v).back() - image[v]);
           image[v] = walker.point(onTarget[v]);
         }
-      if (regionBad() < before) {
-        for (int v : region) moved[v] = 1;
-        r.moves += static_cast<int>(region.size());
-      } else {
-        for (size_t i = 0; i < region.size(); ++i) onTarget[region[i]] = keepFp[i], image[region[i]] = keepX[i];
-      }
-    }
+    });
     badNow = countBad();
   }
   // 4. What is left: a smooth energy that stays finite on flipped triangles (the regularised
@@ -402,18 +422,7 @@ MapUntangleResult untangleCrossMap(const IndexedMesh& S, const IndexedMesh& T, c
   //    surface, so that folds that no single move resolves come undone together. Kept only
   //    when fewer triangles are bad.
   for (int pass = 0; pass < options.energyPasses && badNow > 0 && options.energySweeps > 0; ++pass) {
-    std::vector<int> dist(nv, -1), frontier, region;
-    for (int f = 0; f < nf; ++f)
-      if (bad(f))
-        for (int v : S.faces[f])
-          if (dist[v] < 0) dist[v] = 0, frontier.push_back(v);
-    for (int d = 1; d <= options.maxRing; ++d) {
-      std::vector<int> next;
-      for (int v : frontier)
-        for (int w : nbr[v])
-          if (dist[w] < 0) dist[w] = d, next.push_back(w);
-      frontier.swap(next);
-    }
+    const std::vector<int> dist = ringsAroundBad(options.maxRing);
     // Signed image area along the target normal, per unit of (globally scaled) source area.
     auto signedRatio = [&](int f, int v, const Vec3& x, int g) {
       const auto& t = S.faces[f];
@@ -450,30 +459,9 @@ MapUntangleResult untangleCrossMap(const IndexedMesh& S, const IndexedMesh& T, c
       for (int f : facesOf[v]) e += faceEnergy(f, v, x, g);
       return e;
     };
-    // Each connected region (vertices within the rings, bad triangles' own first) on its own.
-    bool improved = false;
-    std::vector<char> seen(nv, 0);
-    for (int seed = 0; seed < nv; ++seed) {
-      if (seen[seed] || dist[seed] < 0 || !movable(seed)) continue;
-      region.assign(1, seed);
-      seen[seed] = 1;
-      for (size_t i = 0; i < region.size(); ++i)
-        for (int w : nbr[region[i]])
-          if (!seen[w] && dist[w] >= 0 && movable(w)) seen[w] = 1, region.push_back(w);
-      std::vector<int> faces;
-      for (int v : region) faces.insert(faces.end(), facesOf[v].begin(), facesOf[v].end());
-      std::sort(faces.begin(), faces.end());
-      faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
-      auto regionBad = [&] {
-        int n = 0;
-        for (int f : faces) n += bad(f);
-        return n;
-      };
-      const int before = regionBad();
-      if (before == 0) continue;
-      std::vector<FacePoint> keepFp;
-      std::vector<Vec3> keepX;
-      for (int v : region) keepFp.push_back(onTarget[v]), keepX.push_back(image[v]);
+    // Each connected region of the rings on its own.
+    const bool improved = relaxRegions(dist, options.maxRing + 1, [&](const std::vector<int>& region,
+                                                                        const std::vector<int>& faces) {
       for (int sweep = 0; sweep < options.energySweeps; ++sweep) {
         double dmin = 1e300;
         for (int f : faces) dmin = std::min(dmin, signedRatio(f, -1, Vec3::Zero(), -1));
@@ -506,14 +494,7 @@ MapUntangleResult untangleCrossMap(const IndexedMesh& S, const IndexedMesh& T, c
           }
         }
       }
-      if (regionBad() < before) {
-        improved = true;
-        for (size_t i = 0; i < region.size(); ++i)
-          if (image[region[i]] != keepX[i]) moved[region[i]] = 1, ++r.moves;
-      } else {
-        for (size_t i = 0; i < region.size(); ++i) onTarget[region[i]] = keepFp[i], image[region[i]] = keepX[i];
-      }
-    }
+    });
     badNow = countBad();
     if (!improved) break;
   }
