@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <set>
 
+#include "cbd/path_tracer.h"
 #include "cbd/source_layout.h"
 #include "cbd/validate_input.h"
 #include "support/fixtures.h"
@@ -199,4 +200,45 @@ TEST(SourceLayout, AdaptiveEdgeNodesStraightenPathsOnABadMesh) {
   RecordProperty("excess_adaptive", std::to_string(c));
   EXPECT_LT(c, e1);
   EXPECT_LT(c, 0.08);  // within 8% of the great circles
+}
+
+TEST(PathTracer, NearestOfSeveralGoalsIsFoundAsByDijkstraAndABoundGivesUp) {
+  // The goal-directed search (A* towards the nearest goal) must reach the goal that plain
+  // Dijkstra settles first, at the same distance; a bound below that distance finds nothing.
+  IndexedMesh m = fx::icosphere(3);
+  for (Vec3& x : m.positions) x *= 1.0 + 0.15 * std::sin(5 * x.x()) * std::cos(3 * x.y());
+  RefinedMesh rm(m);
+  PathTracer tracer(rm, EdgeNodeOptions{});
+  const std::vector<int> pts = farthestPoints(m, 9);
+  PathQuery all;
+  all.source = pts[0];
+  for (size_t k = 1; k < pts.size(); ++k) all.goals.push_back({pts[k], {}, static_cast<int>(k)});
+  all.distancesOnly = true;
+  const TracedPath d = tracer.trace(all);
+  ASSERT_TRUE(d.found);
+  const size_t nearest = std::min_element(d.goalDistances.begin(), d.goalDistances.end()) - d.goalDistances.begin();
+  const double dmin = d.goalDistances[nearest];
+  ASSERT_TRUE(std::isfinite(dmin));
+  // The second nearest is clearly farther, so the nearest goal is well defined.
+  std::vector<double> sorted = d.goalDistances;
+  std::sort(sorted.begin(), sorted.end());
+  ASSERT_GT(sorted[1], 1.01 * sorted[0]);
+
+  PathQuery q = all;
+  q.distancesOnly = false;
+  const TracedPath p = tracer.trace(q);
+  ASSERT_TRUE(p.found);
+  EXPECT_EQ(p.goal, static_cast<int>(nearest));
+  EXPECT_LE(p.length, dmin * (1 + 1e-12));
+  EXPECT_GE(p.length, (m.positions[pts[nearest + 1]] - m.positions[pts[0]]).norm() * (1 - 1e-12));
+  EXPECT_EQ(p.nodes.front(), pts[0]);
+  EXPECT_EQ(p.nodes.back(), pts[nearest + 1]);
+
+  q.maxLength = 0.99 * dmin;
+  EXPECT_FALSE(tracer.trace(q).found);
+  q.maxLength = 1.01 * dmin;
+  const TracedPath b = tracer.trace(q);
+  ASSERT_TRUE(b.found);
+  EXPECT_EQ(b.goal, p.goal);
+  EXPECT_EQ(b.nodes, p.nodes);
 }

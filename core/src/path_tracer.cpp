@@ -137,11 +137,21 @@ TracedPath PathTracer::trace(const PathQuery& q) {
     const size_t s = static_cast<size_t>(-n - 1);
     return stampS_[s] == st ? distS_[s] : kInf;
   };
-  // A single goal: A* with the straight-line distance to it, a consistent lower bound on
-  // the remaining path (arcs are straight segments), so the first path found is shortest.
-  const bool astar = !q.distancesOnly && q.goals.size() == 1;
-  const Vec3 goalPos = astar ? mesh_.position(q.goals[0].vertex) : Vec3::Zero();
-  auto heuristic = [&](int64_t n) { return astar ? (nodePosition(n) - goalPos).norm() : 0.0; };
+  // A* with the straight-line distance to the nearest goal vertex: a consistent lower bound on
+  // the remaining path (arcs are straight segments, and a minimum of consistent bounds is
+  // consistent), so the first goal reached is the nearest and its path is shortest. Only when
+  // every goal must be settled is it plain Dijkstra.
+  const bool astar = !q.distancesOnly && !q.goals.empty();
+  std::vector<Vec3> goalPos;
+  if (astar)
+    for (const auto& kv : goalsAt) goalPos.push_back(mesh_.position(kv.first));
+  auto heuristic = [&](int64_t n) {
+    if (!astar) return 0.0;
+    const Vec3& p = nodePosition(n);
+    double h = (p - goalPos[0]).norm();
+    for (size_t g = 1; g < goalPos.size(); ++g) h = std::min(h, (p - goalPos[g]).norm());
+    return h;
+  };
   using Item = std::pair<double, int64_t>;  // (distance + heuristic, node)
   std::priority_queue<Item, std::vector<Item>, std::greater<Item>> pq;
   auto relax = [&](int64_t from, int64_t to, double d) {
@@ -203,6 +213,7 @@ TracedPath PathTracer::trace(const PathQuery& q) {
     const double key = pq.top().first;
     const int64_t u = pq.top().second;
     pq.pop();
+    if (key >= q.maxLength) break;  // keys never decrease: nothing shorter is left
     if (u >= kGoalBase) {
       reached = static_cast<int>(u - kGoalBase);
       if (!q.distancesOnly) break;

@@ -163,6 +163,9 @@ SourceLayoutResult buildSourceLayout(const IndexedMesh& input, const std::vector
           if (gi != si && linkable(s, ends[gi], strict))
             q.goals.push_back({anchors[ends[gi].anchor], ends[gi].faces, static_cast<int>(gi)});
         if (q.goals.empty()) continue;
+        // Only a shorter link can win. The margin leaves ties (a link and its reverse, equal up
+        // to rounding) to the comparison below, as without the bound.
+        if (best.found) q.maxLength = best.length * (1.0 + 1e-9);
         TracedPath tp = tracer.trace(q);
         if (tp.found && (!best.found || tp.length < best.length)) {
           best = tp;

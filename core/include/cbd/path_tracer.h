@@ -13,6 +13,7 @@
 /// sub-edges created by a split get their edge nodes recomputed by the same formula.
 
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 #include "cbd/refined_mesh.h"
@@ -51,6 +52,9 @@ struct PathQuery {
   FaceFilter filter;
   std::vector<int> blockedEdgeLabels;  ///< edges with these labels (and their vertices) are walls
   bool distancesOnly = false;  ///< settle every goal and report distances, trace no path
+  /// Only paths shorter than this are wanted: the search gives up (not found) once nothing
+  /// shorter can be left (the A* key bounds the length of every path through a node).
+  double maxLength = std::numeric_limits<double>::infinity();
 };
 
 /// A traced path, before it is committed.
