@@ -142,14 +142,28 @@ GreedyLayoutResult buildGreedyLayout(const IndexedMesh& S, const std::vector<int
   std::vector<std::vector<int>> chains[2];
   std::vector<std::vector<char>> linked(na, std::vector<char>(na, 0));
 
-  // Both partial layouts agree: same rotation at the given anchors, same region signatures.
-  auto consistent = [&](std::initializer_list<int> at) {
+  // Both partial layouts agree after a new pair of paths: same rotation at their anchors, same
+  // signatures of the regions beside the two chains (the other regions agreed before and are
+  // unchanged, as in the Voronoi method's target layout).
+  RegionScratch scratch[2];
+  auto consistent = [&](std::initializer_list<int> at, const std::vector<int>& cs, const std::vector<int>& ct) {
     for (int a : at)
       if (!cyclicEqual(rotationAt(ss.layout.mesh, ss.tracer.edgePath(), ss.vertex(a)),
                        rotationAt(st.layout.mesh, st.tracer.edgePath(), st.vertex(a))))
         return false;
-    return regionSignatures(ss.layout.mesh, ss.tracer.edgePath(), ss.anchorMap(), edges) ==
-           regionSignatures(st.layout.mesh, st.tracer.edgePath(), st.anchorMap(), edges);
+    auto around = [](const RefinedMesh& m, const std::vector<int>& chain) {
+      std::vector<int> faces;
+      for (size_t k = 0; k + 1 < chain.size(); ++k) {
+        const int h = m.findHalfedge(chain[k], chain[k + 1]);
+        faces.push_back(m.face(h));
+        faces.push_back(m.face(RefinedMesh::twin(h)));
+      }
+      return faces;
+    };
+    return regionSignaturesAt(ss.layout.mesh, ss.tracer.edgePath(), ss.anchorMap(), edges, around(ss.layout.mesh, cs),
+                              scratch[0]) ==
+           regionSignaturesAt(st.layout.mesh, st.tracer.edgePath(), st.anchorMap(), edges, around(st.layout.mesh, ct),
+                              scratch[1]);
   };
   // Trace on both surfaces and keep the pair of paths if consistent; else undo.
   auto tryLink = [&](int id, PathQuery qs, PathQuery qt, int a, int b) -> int {
@@ -166,7 +180,7 @@ GreedyLayoutResult buildGreedyLayout(const IndexedMesh& S, const std::vector<int
     if (Status s = ss.tracer.commit(ps, id, cs); !s) return r.status = s, -1;
     if (Status s = st.tracer.commit(pt, id, ct); !s) return r.status = s, -1;
     edges[id].a = a, edges[id].b = b;
-    if (consistent({a, b})) {
+    if (consistent({a, b}, cs, ct)) {
       chains[0][id] = std::move(cs);
       chains[1][id] = std::move(ct);
       edges[id].length = ps.length;

@@ -46,17 +46,6 @@ std::vector<int> cornerWedge(const RefinedMesh& m, const std::vector<int>& edgeP
 
 namespace {
 
-/// Scratch marks for describing regions (stamped, so nothing is cleared between regions).
-struct RegionScratch {
-  std::vector<uint32_t> vertexMark, halfedgeMark;
-  uint32_t stamp = 0;
-  void fit(const RefinedMesh& m) {
-    vertexMark.resize(m.vertexCount(), 0);
-    halfedgeMark.resize(m.halfedgeCount(), 0);
-    ++stamp;
-  }
-};
-
 bool onPath(const RefinedMesh& m, const std::vector<int>& edgePath, int v) {
   const int start = m.outgoing(v);
   int h = start;
@@ -115,6 +104,59 @@ Region describeRegion(const RefinedMesh& m, const std::vector<int>& edgePath, co
   return reg;
 }
 
+/// describeRegion fused with the flood fill that finds the region's faces (one pass over
+/// them). `faces` receives them in breadth-first order, so loops and interior anchors come out
+/// in another order than from describeRegion: use it where only the signature counts.
+Region floodRegion(const RefinedMesh& m, const std::vector<int>& edgePath, const std::vector<int>& anchorOf, int f0,
+                   RegionScratch& sc, std::vector<int>& faces) {
+  sc.fit(m);
+  Region reg;
+  long long V = 0, E = 0;
+  std::vector<int> boundary;
+  faces.assign(1, f0);
+  sc.faceMark[f0] = sc.stamp;
+  for (size_t i = 0; i < faces.size(); ++i)
+    for (int k = 0, h = m.faceHalfedge(faces[i]); k < 3; ++k, h = m.next(h)) {
+      if (edgePath[RefinedMesh::edgeOf(h)] >= 0) {
+        boundary.push_back(h);
+        ++E, ++V;
+      } else {
+        const int t = RefinedMesh::twin(h);
+        if (h < t) ++E;
+        const int g = m.face(t);
+        if (sc.faceMark[g] != sc.stamp) sc.faceMark[g] = sc.stamp, faces.push_back(g);
+      }
+      const int v = m.from(h);
+      if (sc.vertexMark[v] == sc.stamp) continue;
+      sc.vertexMark[v] = sc.stamp;
+      if (onPath(m, edgePath, v)) continue;
+      ++V;
+      if (v < static_cast<int>(anchorOf.size()) && anchorOf[v] >= 0) reg.interiorAnchors.push_back(anchorOf[v]);
+    }
+  reg.faces = static_cast<int>(faces.size());
+  reg.eulerCharacteristic = static_cast<int>(V - E + reg.faces);
+  for (int h0 : boundary) {
+    if (sc.halfedgeMark[h0] == sc.stamp) continue;
+    RegionLoop loop;
+    int h = h0;
+    do {
+      sc.halfedgeMark[h] = sc.stamp;
+      loop.halfedges.push_back(h);
+      h = nextBoundary(m, edgePath, h);
+    } while (h != h0 && sc.halfedgeMark[h] != sc.stamp);
+    for (int x : loop.halfedges) {
+      const int v = m.from(x);
+      if (v < static_cast<int>(anchorOf.size()) && anchorOf[v] >= 0) {
+        loop.corners.push_back(anchorOf[v]);
+        loop.cornerHalfedge.push_back(x);
+        loop.sides.push_back(edgePath[RefinedMesh::edgeOf(x)]);
+      }
+    }
+    reg.loops.push_back(std::move(loop));
+  }
+  return reg;
+}
+
 RegionSignature signatureOf(const Region& r, const std::vector<LayoutEdge>& edges) {
   RegionSignature s;
   s.euler = r.eulerCharacteristic;
@@ -132,20 +174,11 @@ RegionSignature signatureOf(const Region& r, const std::vector<LayoutEdge>& edge
 
 }  // namespace
 
-std::vector<int> regionFaces(const RefinedMesh& m, const std::vector<int>& edgePath, int f0) {
-  std::vector<int> faces{f0}, stack{f0};
-  std::vector<char> in(m.faceCount(), 0);
-  in[f0] = 1;
-  while (!stack.empty()) {
-    const int f = stack.back();
-    stack.pop_back();
-    for (int k = 0, h = m.faceHalfedge(f); k < 3; ++k, h = m.next(h)) {
-      if (edgePath[RefinedMesh::edgeOf(h)] >= 0) continue;
-      const int g = m.face(RefinedMesh::twin(h));
-      if (!in[g]) in[g] = 1, faces.push_back(g), stack.push_back(g);
-    }
-  }
-  return faces;
+void RegionScratch::fit(const RefinedMesh& m) {
+  vertexMark.resize(m.vertexCount(), 0);
+  halfedgeMark.resize(m.halfedgeCount(), 0);
+  faceMark.resize(m.faceCount(), 0);
+  ++stamp;
 }
 
 RegionMap analyzeRegions(const RefinedMesh& m, const std::vector<int>& edgePath,
@@ -178,15 +211,17 @@ RegionMap analyzeRegions(const RefinedMesh& m, const std::vector<int>& edgePath,
 
 std::vector<RegionSignature> regionSignaturesAt(const RefinedMesh& m, const std::vector<int>& edgePath,
                                                 const std::vector<int>& anchorOf, const std::vector<LayoutEdge>& edges,
-                                                const std::vector<int>& seedFaces) {
+                                                const std::vector<int>& seedFaces, RegionScratch& sc,
+                                                std::vector<std::vector<int>>* regionFaces) {
   std::vector<RegionSignature> out;
-  std::vector<char> done(m.faceCount(), 0);
-  RegionScratch sc;
+  if (regionFaces) regionFaces->clear();
+  sc.fit(m);
+  const uint32_t first = sc.stamp + 1;  // faces of this call's regions carry stamps from here on
+  std::vector<int> faces;
   for (int f : seedFaces) {
-    if (done[f]) continue;
-    const std::vector<int> faces = regionFaces(m, edgePath, f);
-    for (int g : faces) done[g] = 1;
-    out.push_back(signatureOf(describeRegion(m, edgePath, anchorOf, faces, sc), edges));
+    if (sc.faceMark[f] >= first) continue;
+    out.push_back(signatureOf(floodRegion(m, edgePath, anchorOf, f, sc, faces), edges));
+    if (regionFaces) regionFaces->push_back(std::move(faces));
   }
   std::sort(out.begin(), out.end());
   return out;

@@ -201,6 +201,28 @@ TargetLayoutResult buildTargetLayout(const Layout& src, const IndexedMesh& targe
   }
   std::vector<int> queryLabel;  // per face: queryStamp = allowed, -queryStamp = in the region
   int queryStamp = 0;
+  // The regions of the partial target layout, kept up to date from the flood fills that check
+  // each committed path, so that no attempt floods its region again: region id per face and
+  // the faces per id (lists of merged or split regions are emptied).
+  RegionScratch srcScratch, tgtScratch;
+  std::vector<int> regionOf(L.mesh.faceCount(), -1);
+  std::vector<std::vector<int>> regionList;
+  auto setRegion = [&](std::vector<int> faces) {
+    regionOf.resize(L.mesh.faceCount(), -1);
+    for (int f : faces) {
+      const int old = regionOf[f];
+      if (old >= 0 && !regionList[old].empty()) std::vector<int>().swap(regionList[old]);
+      regionOf[f] = static_cast<int>(regionList.size());
+    }
+    regionList.push_back(std::move(faces));
+  };
+  {
+    std::vector<int> all(L.mesh.faceCount());
+    std::iota(all.begin(), all.end(), 0);
+    std::vector<std::vector<int>> parts;
+    regionSignaturesAt(L.mesh, tracer.edgePath(), tgtAnchorOf, src.edges, all, tgtScratch, &parts);
+    for (auto& p : parts) setRegion(std::move(p));
+  }
   std::string lastReason;
   auto tryEmbed = [&](int e) -> int {  // 1 embedded, 0 not now, -1 internal error (r.status set)
     const LayoutEdge& se = src.edges[e];
@@ -213,7 +235,8 @@ TargetLayoutResult buildTargetLayout(const Layout& src, const IndexedMesh& targe
       seeds.push_back(src.mesh.face(h));
       seeds.push_back(src.mesh.face(RefinedMesh::twin(h)));
     }
-    const std::vector<RegionSignature> want = regionSignaturesAt(src.mesh, srcPartial, srcAnchorOf, src.edges, seeds);
+    const std::vector<RegionSignature> want =
+        regionSignaturesAt(src.mesh, srcPartial, srcAnchorOf, src.edges, seeds, srcScratch);
     setSourceEdge(e, -1);
     // Search rings of target clusters around the two anchors' own: 0 = their two clusters
     // (the paper's local search), k = clusters within k cuts of them, then the whole region.
@@ -224,14 +247,15 @@ TargetLayoutResult buildTargetLayout(const Layout& src, const IndexedMesh& targe
       // Sectors and the region afresh: an undone attempt leaves its splits (new faces) behind.
       const Sector sa = sectorAt(e, se.a, 0), sb = sectorAt(e, se.b, 0);
       refreshTargetAnchorOf();
-      const std::vector<int> region = regionFaces(L.mesh, tracer.edgePath(), sa.faces.front());
-      ++queryStamp;
-      queryLabel.resize(L.mesh.faceCount(), 0);
-      for (int f : region) queryLabel[f] = -queryStamp;  // in the region
-      if (queryLabel[sb.faces.front()] != -queryStamp) {
+      const int regionId = regionOf[sa.faces.front()];
+      if (regionOf[sb.faces.front()] != regionId) {
         lastReason = "its two sectors lie in different regions of the partial target layout";
         return 0;
       }
+      const std::vector<int>& region = regionList[regionId];
+      ++queryStamp;
+      queryLabel.resize(L.mesh.faceCount(), 0);
+      for (int f : region) queryLabel[f] = -queryStamp;  // in the region
       const bool wholeRegion = frontier.empty();
       for (int f : region)
         if (wholeRegion || ring[tracer.faceLabel()[f]] >= 0) queryLabel[f] = queryStamp;
@@ -263,13 +287,20 @@ TargetLayoutResult buildTargetLayout(const Layout& src, const IndexedMesh& targe
         around.push_back(L.mesh.face(h));
         around.push_back(L.mesh.face(RefinedMesh::twin(h)));
       }
-      if (regionSignaturesAt(L.mesh, tracer.edgePath(), tgtAnchorOf, src.edges, around) == want) {
+      std::vector<std::vector<int>> parts;
+      const bool same =
+          regionSignaturesAt(L.mesh, tracer.edgePath(), tgtAnchorOf, src.edges, around, tgtScratch, &parts) == want;
+      if (same) {
+        for (auto& p : parts) setRegion(std::move(p));
         L.edges[e].vertices = std::move(chain);
         L.edges[e].length = tp.length;
         (attempt == 0 ? r.embeddedInClusters : r.embeddedInRegion)++;
         return 1;
       }
       tracer.release(chain, e);
+      // One region again, with the faces the path's splits added.
+      for (size_t k = 1; k < parts.size(); ++k) parts[0].insert(parts[0].end(), parts[k].begin(), parts[k].end());
+      setRegion(std::move(parts[0]));
       ++r.rejectedPaths;
       lastReason = "its shortest path would enclose other anchors than on the source (blocking)";
       if (wholeRegion) break;

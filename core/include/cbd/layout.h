@@ -6,6 +6,7 @@
 
 #include <array>
 #include <string>
+#include <cstdint>
 #include <vector>
 
 #include "cbd/refined_mesh.h"
@@ -123,14 +124,22 @@ std::vector<RegionSignature> regionSignatures(const RefinedMesh& mesh, const std
                                               const std::vector<int>& anchorOfVertex,
                                               const std::vector<LayoutEdge>& edges);
 
+/// Scratch marks for flood fills over one refined mesh, stamped so that nothing is cleared
+/// between calls: keep one per mesh across many calls (it grows with the mesh).
+struct RegionScratch {
+  std::vector<uint32_t> vertexMark, halfedgeMark, faceMark;
+  uint32_t stamp = 0;
+  void fit(const RefinedMesh& mesh);
+};
+
 /// Signatures of only the regions holding the given faces (local flood fills), sorted: after
 /// one path is added, comparing these around it on two surfaces is as good as comparing all.
+/// With `regionFaces`, also the faces of each of those regions (one list per region).
 std::vector<RegionSignature> regionSignaturesAt(const RefinedMesh& mesh, const std::vector<int>& edgePath,
                                                 const std::vector<int>& anchorOfVertex,
-                                                const std::vector<LayoutEdge>& edges, const std::vector<int>& seedFaces);
-
-/// The faces of the region holding face f (flood fill across edges that are on no path).
-std::vector<int> regionFaces(const RefinedMesh& mesh, const std::vector<int>& edgePath, int f);
+                                                const std::vector<LayoutEdge>& edges, const std::vector<int>& seedFaces,
+                                                RegionScratch& scratch,
+                                                std::vector<std::vector<int>>* regionFaces = nullptr);
 
 /// The halfedge by which a path (vertex chain) leaves its end vertex v.
 int leavingHalfedge(const RefinedMesh& mesh, const std::vector<int>& chain, int v);
