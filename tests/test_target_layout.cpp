@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <functional>
+#include <set>
 
 #include "cbd/anchor_sampling.h"
 #include "cbd/source_layout.h"
@@ -168,4 +169,77 @@ TEST(TargetLayout, TwistedTubeDoesNotSwirl) {
   const double meanDeviation = sum / count;
   RecordProperty("mean_angular_deviation_rad", std::to_string(meanDeviation));
   EXPECT_LT(meanDeviation, 0.35) << "target paths swirl around the tube";
+}
+
+TEST(RegionTracker, AgreesWithFloodFillsPathByPath) {
+  // Replay complete source layouts (sphere, torus, double torus) path by path into an empty
+  // partial layout, in two orders; after every path (and after undoing every third one) the
+  // tracked signatures beside it and every face's region must be what flood fills find.
+  struct Case {
+    IndexedMesh mesh;
+    int anchors;
+  };
+  std::vector<Case> cases;
+  cases.push_back({fx::icosphere(3), 14});
+  cases.push_back({fx::torus(2.0, 0.7, 48, 20), 9});
+  cases.push_back({fx::holedPlate(2, 4, 20), 16});
+  for (const Case& c : cases) {
+    const SourceLayoutResult sl = buildSourceLayout(c.mesh, farthestPointSampling(c.mesh, c.anchors));
+    ASSERT_TRUE(sl.status.ok()) << sl.status.message;
+    const Layout& L = sl.layout;
+    std::vector<int> anchorOf(L.mesh.vertexCount(), -1);
+    for (int i = 0; i < L.anchorCount(); ++i) anchorOf[L.anchorVertices[i]] = i;
+    const int ne = static_cast<int>(L.edges.size());
+    for (int order = 0; order < 2; ++order) {
+      SCOPED_TRACE("genus " + std::to_string(validateMesh(c.mesh, "m").genus) + ", order " + std::to_string(order));
+      std::vector<int> seq(ne);
+      for (int k = 0; k < ne; ++k) seq[k] = order == 0 ? k : (k * 7) % ne;  // 7 is prime to ne here
+      ASSERT_EQ(std::set<int>(seq.begin(), seq.end()).size(), static_cast<size_t>(ne));
+      std::vector<int> edgePath(L.mesh.edgeCount(), -1);
+      auto set = [&](int e, int value) {
+        const auto& ch = L.edges[e].vertices;
+        for (size_t k = 0; k + 1 < ch.size(); ++k) edgePath[RefinedMesh::edgeOf(L.mesh.findHalfedge(ch[k], ch[k + 1]))] = value;
+      };
+      RegionTracker tracker(L.mesh, edgePath, anchorOf, L.edges);
+      RegionScratch sc;
+      int splits = 0, joins = 0;
+      for (int k = 0; k < ne; ++k) {
+        const int e = seq[k];
+        const auto& ch = L.edges[e].vertices;
+        for (int round = 0; round < (k % 3 == 0 ? 2 : 1); ++round) {
+          const int region = tracker.regionOf(L.mesh.face(L.mesh.findHalfedge(ch[0], ch[1])));
+          set(e, e);
+          const std::vector<RegionSignature> got = tracker.add(ch, region);
+          std::vector<int> beside;
+          for (size_t j = 0; j + 1 < ch.size(); ++j) {
+            const int h = L.mesh.findHalfedge(ch[j], ch[j + 1]);
+            beside.push_back(L.mesh.face(h));
+            beside.push_back(L.mesh.face(RefinedMesh::twin(h)));
+          }
+          std::vector<std::vector<int>> parts;
+          const std::vector<RegionSignature> flood = regionSignaturesAt(L.mesh, edgePath, anchorOf, L.edges, beside, sc, &parts);
+          ASSERT_TRUE(got == flood) << "edge " << e;
+          (got.size() == 2 ? splits : joins)++;
+          // Labels: one id per flooded region, and different ids for different regions.
+          std::set<int> ids;
+          for (const auto& part : parts) {
+            for (int f : part) ASSERT_EQ(tracker.regionOf(f), tracker.regionOf(part[0]));
+            ids.insert(tracker.regionOf(part[0]));
+          }
+          ASSERT_EQ(ids.size(), parts.size());
+          if (round == 0 && k % 3 == 0) {  // undo, and add again in the next round
+            tracker.undo();
+            set(e, -1);
+            std::vector<std::vector<int>> merged;
+            regionSignaturesAt(L.mesh, edgePath, anchorOf, L.edges, beside, sc, &merged);
+            ASSERT_EQ(merged.size(), 1u);
+            for (int f : merged[0]) ASSERT_EQ(tracker.regionOf(f), region);
+          }
+        }
+      }
+      // Every region ends a triangle; both kinds of update were exercised.
+      EXPECT_GT(splits, 0);
+      EXPECT_GT(joins, 0);
+    }
+  }
 }

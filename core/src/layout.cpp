@@ -243,6 +243,154 @@ std::vector<RegionSignature> regionSignatures(const RefinedMesh& mesh, const std
   return out;
 }
 
+RegionTracker::RegionTracker(const RefinedMesh& m, const std::vector<int>& edgePath,
+                             const std::vector<int>& anchorOf, const std::vector<LayoutEdge>& edges)
+    : mesh_(m), edgePath_(edgePath), anchorOf_(anchorOf), edges_(edges), label_(m.faceCount(), -1) {
+  std::vector<int> faces;
+  for (int f = 0; f < m.faceCount(); ++f) {
+    if (label_[f] >= 0) continue;
+    const Region r = floodRegion(m, edgePath, anchorOf, f, scratch_, faces);
+    for (int g : faces) label_[g] = static_cast<int>(sig_.size());
+    sig_.push_back(signatureOf(r, edges));
+  }
+}
+
+/// The boundary loop through halfedge h as (side, direction) at its corners, rotated to its
+/// smallest entry as in a signature; sawTwin: whether it runs through halfedge twinOf too.
+std::vector<std::pair<int, int>> RegionTracker::loopFrom(int h0, bool& sawTwin, int twinOf) const {
+  std::vector<std::pair<int, int>> loop;
+  sawTwin = false;
+  int h = h0;
+  do {
+    if (h == twinOf) sawTwin = true;
+    const int v = mesh_.from(h);
+    if (v < static_cast<int>(anchorOf_.size()) && anchorOf_[v] >= 0) {
+      const int side = edgePath_[RefinedMesh::edgeOf(h)];
+      loop.emplace_back(side, edges_[side].a == anchorOf_[v] ? 1 : 0);
+    }
+    h = nextBoundary(mesh_, edgePath_, h);
+  } while (h != h0);
+  std::rotate(loop.begin(), std::min_element(loop.begin(), loop.end()), loop.end());
+  return loop;
+}
+
+std::vector<RegionSignature> RegionTracker::add(const std::vector<int>& chain, int region) {
+  label_.resize(mesh_.faceCount(), region);  // faces from splits
+  Undo u;
+  u.region = region;
+  u.before = sig_[region];
+  const RegionSignature& old = u.before;
+  const int hl = mesh_.findHalfedge(chain[0], chain[1]), hr = RefinedMesh::twin(hl);
+  const int a = anchorOf_[chain.front()], b = anchorOf_[chain.back()];
+
+  // Entries of new loops; old loops sharing one were touched by the path and are replaced.
+  auto untouched = [&](const std::vector<std::vector<std::pair<int, int>>>& fresh) {
+    std::vector<std::pair<int, int>> seen;
+    for (const auto& l : fresh) seen.insert(seen.end(), l.begin(), l.end());
+    std::sort(seen.begin(), seen.end());
+    std::vector<std::vector<std::pair<int, int>>> keep;
+    for (const auto& l : old.loops) {
+      bool touched = false;
+      for (const auto& x : l) touched = touched || std::binary_search(seen.begin(), seen.end(), x);
+      if (!touched) keep.push_back(l);
+    }
+    return keep;
+  };
+  auto without = [](std::vector<int> v, const std::vector<int>& drop) {
+    v.erase(std::remove_if(v.begin(), v.end(), [&](int x) { return std::find(drop.begin(), drop.end(), x) != drop.end(); }), v.end());
+    return v;
+  };
+  // Endpoints that were inside the region: each one turns the Euler characteristic by -1
+  // (cutting a path of k edges in adds 1 - that many).
+  int insideEnds = 0;
+  for (int x : {a, b})
+    if (std::find(old.inside.begin(), old.inside.end(), x) != old.inside.end()) ++insideEnds;
+  if (a == b) insideEnds = std::min(insideEnds, 1);
+
+  bool twinOnLeft = false, dummy = false;
+  std::vector<std::pair<int, int>> left = loopFrom(hl, twinOnLeft, hr);
+  auto joined = [&](std::vector<std::vector<std::pair<int, int>>> fresh) {
+    RegionSignature s;
+    s.euler = old.euler + 1 - insideEnds;
+    s.inside = without(old.inside, {a, b});
+    s.loops = untouched(fresh);
+    s.loops.insert(s.loops.end(), fresh.begin(), fresh.end());
+    std::sort(s.loops.begin(), s.loops.end());
+    return s;
+  };
+  if (twinOnLeft) {  // one loop runs along both sides: the region stays in one piece
+    sig_[region] = joined({left});
+    undo_.push_back(std::move(u));
+    return {sig_[region]};
+  }
+  std::vector<std::pair<int, int>> right = loopFrom(hr, dummy, -1);
+  // Two loops: a split, unless the sides meet around a handle. Flood both in lockstep.
+  side_.resize(mesh_.faceCount(), 0);
+  ++round_;
+  const uint32_t mark[2] = {2 * round_, 2 * round_ + 1};
+  std::vector<int> queue[2] = {{mesh_.face(hl)}, {mesh_.face(hr)}};
+  size_t head[2] = {0, 0};
+  side_[queue[0][0]] = mark[0];
+  side_[queue[1][0]] = mark[1];
+  int complete = -1;
+  bool met = queue[0][0] == queue[1][0];
+  while (!met && complete < 0) {
+    for (int s = 0; s < 2 && !met && complete < 0; ++s) {
+      if (head[s] == queue[s].size()) {
+        complete = s;
+        break;
+      }
+      const int f = queue[s][head[s]++];
+      for (int k = 0, h = mesh_.faceHalfedge(f); k < 3; ++k, h = mesh_.next(h)) {
+        if (edgePath_[RefinedMesh::edgeOf(h)] >= 0) continue;
+        const int g = mesh_.face(RefinedMesh::twin(h));
+        if (side_[g] == mark[1 - s]) {
+          met = true;
+          break;
+        }
+        if (side_[g] != mark[s]) side_[g] = mark[s], queue[s].push_back(g);
+      }
+    }
+  }
+  if (met) {  // across a handle: still one region, with one loop more
+    sig_[region] = joined({left, right});
+    undo_.push_back(std::move(u));
+    return {sig_[region]};
+  }
+  // The side `complete` is cut off: describe it, and the rest from what changed.
+  std::vector<int> faces;
+  const RegionSignature small =
+      signatureOf(floodRegion(mesh_, edgePath_, anchorOf_, queue[complete][0], scratch_, faces), edges_);
+  const std::vector<std::pair<int, int>>& bigLoop = complete == 0 ? right : left;
+  RegionSignature big;
+  big.euler = old.euler + 1 - insideEnds - small.euler;
+  big.inside = without(without(old.inside, {a, b}), small.inside);
+  std::vector<std::vector<std::pair<int, int>>> fresh = small.loops;
+  fresh.push_back(bigLoop);
+  big.loops = untouched(fresh);
+  big.loops.push_back(bigLoop);
+  std::sort(big.loops.begin(), big.loops.end());
+  u.split = static_cast<int>(sig_.size());
+  for (int f : faces) label_[f] = u.split;
+  u.moved = std::move(faces);
+  sig_[region] = big;
+  sig_.push_back(small);
+  undo_.push_back(std::move(u));
+  std::vector<RegionSignature> out{small, big};
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+void RegionTracker::undo() {
+  Undo& u = undo_.back();
+  sig_[u.region] = std::move(u.before);
+  if (u.split >= 0) {
+    for (int f : u.moved) label_[f] = u.region;
+    sig_.pop_back();
+  }
+  undo_.pop_back();
+}
+
 int leavingHalfedge(const RefinedMesh& m, const std::vector<int>& chain, int v) {
   if (chain.front() == v) return m.findHalfedge(chain[0], chain[1]);
   return m.findHalfedge(chain.back(), chain[chain.size() - 2]);

@@ -199,66 +199,41 @@ TargetLayoutResult buildTargetLayout(const Layout& src, const IndexedMesh& targe
     clusterNeighbours[c.i].push_back(c.j);
     clusterNeighbours[c.j].push_back(c.i);
   }
-  std::vector<int> queryLabel;  // per face: queryStamp = allowed, -queryStamp = in the region
-  int queryStamp = 0;
-  // The regions of the partial target layout, kept up to date from the flood fills that check
-  // each committed path, so that no attempt floods its region again: region id per face and
-  // the faces per id (lists of merged or split regions are emptied).
-  RegionScratch srcScratch, tgtScratch;
-  std::vector<int> regionOf(L.mesh.faceCount(), -1);
-  std::vector<std::vector<int>> regionList;
-  auto setRegion = [&](std::vector<int> faces) {
-    regionOf.resize(L.mesh.faceCount(), -1);
-    for (int f : faces) {
-      const int old = regionOf[f];
-      if (old >= 0 && !regionList[old].empty()) std::vector<int>().swap(regionList[old]);
-      regionOf[f] = static_cast<int>(regionList.size());
-    }
-    regionList.push_back(std::move(faces));
-  };
-  {
-    std::vector<int> all(L.mesh.faceCount());
-    std::iota(all.begin(), all.end(), 0);
-    std::vector<std::vector<int>> parts;
-    regionSignaturesAt(L.mesh, tracer.edgePath(), tgtAnchorOf, src.edges, all, tgtScratch, &parts);
-    for (auto& p : parts) setRegion(std::move(p));
-  }
+  // The regions of both partial layouts, tracked path by path (RegionTracker): no attempt
+  // floods its region, and a check walks the loops the new path touches.
+  RegionTracker srcRegions(src.mesh, srcPartial, srcAnchorOf, src.edges);
+  RegionTracker tgtRegions(L.mesh, tracer.edgePath(), tgtAnchorOf, src.edges);
+  std::vector<char> inRing(na, 0);
   std::string lastReason;
   auto tryEmbed = [&](int e) -> int {  // 1 embedded, 0 not now, -1 internal error (r.status set)
     const LayoutEdge& se = src.edges[e];
-    // The regions around this edge in the partial source layout once it is added: what the
-    // target must reproduce around its path (the other regions already agree).
+    // The regions beside this edge in the partial source layout once it is added: what the
+    // target must reproduce beside its path (the other regions already agree). Undone unless
+    // the edge is embedded.
+    const int srcRegion = srcRegions.regionOf(src.mesh.face(src.mesh.findHalfedge(se.vertices[0], se.vertices[1])));
     setSourceEdge(e, e);
-    std::vector<int> seeds;
-    for (size_t k = 0; k + 1 < se.vertices.size(); ++k) {
-      const int h = src.mesh.findHalfedge(se.vertices[k], se.vertices[k + 1]);
-      seeds.push_back(src.mesh.face(h));
-      seeds.push_back(src.mesh.face(RefinedMesh::twin(h)));
-    }
-    const std::vector<RegionSignature> want =
-        regionSignaturesAt(src.mesh, srcPartial, srcAnchorOf, src.edges, seeds, srcScratch);
-    setSourceEdge(e, -1);
+    const std::vector<RegionSignature> want = srcRegions.add(se.vertices, srcRegion);
+    auto notNow = [&] {
+      srcRegions.undo();
+      setSourceEdge(e, -1);
+      return 0;
+    };
     // Search rings of target clusters around the two anchors' own: 0 = their two clusters
     // (the paper's local search), k = clusters within k cuts of them, then the whole region.
     std::vector<int> ring(na, -1);
     std::vector<int> frontier{se.a, se.b};
     ring[se.a] = ring[se.b] = 0;
     for (int attempt = 0;; ++attempt) {
-      // Sectors and the region afresh: an undone attempt leaves its splits (new faces) behind.
+      // Sectors afresh: an undone attempt leaves its splits (new faces) behind.
       const Sector sa = sectorAt(e, se.a, 0), sb = sectorAt(e, se.b, 0);
       refreshTargetAnchorOf();
-      const int regionId = regionOf[sa.faces.front()];
-      if (regionOf[sb.faces.front()] != regionId) {
+      const int region = tgtRegions.regionOf(sa.faces.front());
+      if (tgtRegions.regionOf(sb.faces.front()) != region) {
         lastReason = "its two sectors lie in different regions of the partial target layout";
-        return 0;
+        return notNow();
       }
-      const std::vector<int>& region = regionList[regionId];
-      ++queryStamp;
-      queryLabel.resize(L.mesh.faceCount(), 0);
-      for (int f : region) queryLabel[f] = -queryStamp;  // in the region
       const bool wholeRegion = frontier.empty();
-      for (int f : region)
-        if (wholeRegion || ring[tracer.faceLabel()[f]] >= 0) queryLabel[f] = queryStamp;
+      for (int c = 0; c < na; ++c) inRing[c] = ring[c] >= 0;
       std::vector<int> next;
       for (int c : frontier)
         for (int d : clusterNeighbours[c])
@@ -268,7 +243,9 @@ TargetLayoutResult buildTargetLayout(const Layout& src, const IndexedMesh& targe
       q.source = anchors[se.a];
       q.sourceFaces = sa.faces;
       q.goals.push_back({anchors[se.b], sb.faces, 0});
-      q.filter = {&queryLabel, queryStamp, queryStamp};
+      q.filter.label = &tgtRegions.labels();
+      q.filter.a = q.filter.b = region;
+      if (!wholeRegion) q.filter.group = &tracer.faceLabel(), q.filter.groupAllowed = &inRing;
       TracedPath tp = tracer.trace(q);
       if (!tp.found) {
         lastReason = attempt == 0 ? "no path inside the two target clusters" : "no path inside its region";
@@ -281,31 +258,19 @@ TargetLayoutResult buildTargetLayout(const Layout& src, const IndexedMesh& targe
         return -1;
       }
       refreshTargetAnchorOf();
-      std::vector<int> around;
-      for (size_t k = 0; k + 1 < chain.size(); ++k) {
-        const int h = L.mesh.findHalfedge(chain[k], chain[k + 1]);
-        around.push_back(L.mesh.face(h));
-        around.push_back(L.mesh.face(RefinedMesh::twin(h)));
-      }
-      std::vector<std::vector<int>> parts;
-      const bool same =
-          regionSignaturesAt(L.mesh, tracer.edgePath(), tgtAnchorOf, src.edges, around, tgtScratch, &parts) == want;
-      if (same) {
-        for (auto& p : parts) setRegion(std::move(p));
+      if (tgtRegions.add(chain, region) == want) {
         L.edges[e].vertices = std::move(chain);
         L.edges[e].length = tp.length;
         (attempt == 0 ? r.embeddedInClusters : r.embeddedInRegion)++;
         return 1;
       }
       tracer.release(chain, e);
-      // One region again, with the faces the path's splits added.
-      for (size_t k = 1; k < parts.size(); ++k) parts[0].insert(parts[0].end(), parts[k].begin(), parts[k].end());
-      setRegion(std::move(parts[0]));
+      tgtRegions.undo();
       ++r.rejectedPaths;
       lastReason = "its shortest path would enclose other anchors than on the source (blocking)";
       if (wholeRegion) break;
     }
-    return 0;
+    return notNow();
   };
 
   bool force = false;

@@ -141,6 +141,48 @@ std::vector<RegionSignature> regionSignaturesAt(const RefinedMesh& mesh, const s
                                                 RegionScratch& scratch,
                                                 std::vector<std::vector<int>>* regionFaces = nullptr);
 
+/// The regions of a partial layout, kept up to date path by path: a region id per face and the
+/// signature of every region. Adding a path walks the boundary loops it touches; only when the
+/// path may split its region are both sides flooded, in lockstep, until the smaller one is
+/// complete (or they meet). So a check costs about the loops' length plus the smaller side,
+/// not the whole region, and equals `regionSignaturesAt` beside the path.
+class RegionTracker {
+ public:
+  /// Every region of `mesh` cut along `edgePath`. The tracker keeps the references: `edgePath`
+  /// and `anchorOfVertex` may change (and grow with the mesh) between calls as described below.
+  RegionTracker(const RefinedMesh& mesh, const std::vector<int>& edgePath, const std::vector<int>& anchorOfVertex,
+                const std::vector<LayoutEdge>& edges);
+
+  int regionOf(int f) const { return label_[f]; }
+  /// Region id per face (faces added to the mesh since the last call are not in it yet).
+  const std::vector<int>& labels() const { return label_; }
+
+  /// The path `chain` (a vertex chain between two anchors) was just cut in inside region
+  /// `region`; faces the mesh gained since the last call (splits) lie in that region.
+  /// Returns the sorted signatures of the regions beside the path.
+  std::vector<RegionSignature> add(const std::vector<int>& chain, int region);
+  /// The last added path was removed again (its faces from splits stay, in its region).
+  void undo();
+
+ private:
+  std::vector<std::pair<int, int>> loopFrom(int h, bool& sawTwin, int twinOf) const;
+  const RefinedMesh& mesh_;
+  const std::vector<int>& edgePath_;
+  const std::vector<int>& anchorOf_;
+  const std::vector<LayoutEdge>& edges_;
+  std::vector<int> label_;
+  std::vector<RegionSignature> sig_;
+  RegionScratch scratch_;
+  std::vector<uint32_t> side_;  // lockstep flood marks: 2 * round + side
+  uint32_t round_ = 0;
+  struct Undo {
+    int region = -1, split = -1;
+    RegionSignature before;
+    std::vector<int> moved;
+  };
+  std::vector<Undo> undo_;
+};
+
 /// The halfedge by which a path (vertex chain) leaves its end vertex v.
 int leavingHalfedge(const RefinedMesh& mesh, const std::vector<int>& chain, int v);
 

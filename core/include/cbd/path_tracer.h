@@ -29,11 +29,18 @@ struct EdgeNodeOptions {
 };
 
 /// Which faces a search may cross: all (label == nullptr) or those whose label is one of up to
-/// two values.
+/// two values; with `group`, only those among them whose group g has groupAllowed[g] set.
 struct FaceFilter {
   const std::vector<int>* label = nullptr;
   int a = -1, b = -1;
-  bool allows(int f) const { return !label || (*label)[f] == a || (*label)[f] == b; }
+  const std::vector<int>* group = nullptr;
+  const std::vector<char>* groupAllowed = nullptr;
+  bool allows(int f) const {
+    if (label && (*label)[f] != a && (*label)[f] != b) return false;
+    if (!group) return true;
+    const int g = (*group)[f];
+    return g >= 0 && (*groupAllowed)[g];
+  }
 };
 
 /// A goal of a search: an anchor vertex, optionally reachable only through some of its faces
