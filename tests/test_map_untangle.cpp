@@ -60,6 +60,77 @@ TEST(MapUntangle, IdentityIsLeftUnchanged) {
   for (int v = 0; v < m.vertexCount(); ++v) EXPECT_EQ(image[v], before[v]);
 }
 
+TEST(MapUntangle, IdentityOfASpikyMeshHasNoFlipWhateverFaceHoldsEachVertex) {
+  // Sharp spikes: at a spike's tip the faces around it face far apart. Each vertex of the
+  // identity map is located in the face around it that disagrees most with its neighbours, so
+  // the test against located faces alone (imageFlipped) sees flips that are not there; the
+  // metrics' test (the closest normal of the faces touching a corner) sees none, and the
+  // untangling leaves the map alone.
+  IndexedMesh m = fx::icosphere(1);
+  for (int v = 0; v < m.vertexCount(); v += 3) m.positions[v] *= 3.0;
+  const std::vector<Vec3> normal = faceNormals(m);
+  std::vector<std::vector<int>> star(m.vertexCount());
+  for (int f = 0; f < m.faceCount(); ++f)
+    for (int v : m.faces[f]) star[v].push_back(f);
+  std::vector<FacePoint> on(m.vertexCount());
+  for (int v = 0; v < m.vertexCount(); ++v) {
+    double worst = 2;
+    for (int f : star[v])
+      for (int g : star[v])
+        if (normal[f].dot(normal[g]) < worst) {
+          worst = normal[f].dot(normal[g]);
+          on[v].face = f;
+          const auto& t = m.faces[f];
+          on[v].bary = Vec3::Unit(static_cast<int>(std::find(t.begin(), t.end(), v) - t.begin()));
+        }
+  }
+  std::vector<Vec3> image = m.positions;
+  int strict = 0;
+  for (const auto& t : m.faces)
+    strict += imageFlipped(image[t[0]], image[t[1]], image[t[2]], normal, on[t[0]].face, on[t[1]].face, on[t[2]].face);
+  ASSERT_GT(strict, 0) << "the fixture must fool the located-face test";
+  const DistortionMetrics d = computeDistortion(m, image, m, on);
+  EXPECT_EQ(d.flipped, 0);
+  EXPECT_NEAR(d.eL2, 1.0, 1e-12);
+  const MapUntangleResult r = untangleCrossMap(m, m, std::vector<char>(m.vertexCount(), 0), on, image);
+  EXPECT_EQ(r.flippedBefore, 0);
+  EXPECT_EQ(r.attempts, 0);
+  for (int v = 0; v < m.vertexCount(); ++v) EXPECT_EQ(image[v], m.positions[v]);
+  // A triangle really turned over is still flipped for the metrics: on a smooth sphere, throw
+  // a vertex's image across a neighbour, into the middle of a face beyond it.
+  const IndexedMesh sphere = fx::icosphere(2);
+  std::vector<FacePoint> son;
+  std::vector<Vec3> simage;
+  identityMap(sphere, son, simage);
+  const int v = 0;
+  const auto& t0 = sphere.faces[son[v].face];
+  const int w = t0[0] == v ? t0[1] : t0[0];  // a neighbour of v
+  int beyond = -1;  // a face around w, opposite v: sharing no vertex with v's faces but w
+  for (int f = 0; f < sphere.faceCount() && beyond < 0; ++f) {
+    const auto& t = sphere.faces[f];
+    if (std::find(t.begin(), t.end(), w) == t.end()) continue;
+    bool nearV = false;
+    for (int x : t)
+      if (x != w)
+        for (const auto& g : sphere.faces)
+          if (std::find(g.begin(), g.end(), v) != g.end() && std::find(g.begin(), g.end(), x) != g.end()) nearV = true;
+    if (!nearV) beyond = f;
+  }
+  ASSERT_GE(beyond, 0);
+  son[v] = FacePoint{beyond, Vec3::Constant(1.0 / 3)};
+  const auto& tb = sphere.faces[beyond];
+  simage[v] = (sphere.positions[tb[0]] + sphere.positions[tb[1]] + sphere.positions[tb[2]]) / 3;
+  const TargetNormals tn(sphere);
+  const std::vector<Vec3> sn = faceNormals(sphere);
+  int lenient = 0, located = 0;
+  for (const auto& t : sphere.faces) {
+    lenient += tn.flipped(simage[t[0]], simage[t[1]], simage[t[2]], son[t[0]], son[t[1]], son[t[2]]);
+    located += imageFlipped(simage[t[0]], simage[t[1]], simage[t[2]], sn, son[t[0]].face, son[t[1]].face, son[t[2]].face);
+  }
+  EXPECT_GT(lenient, 0);
+  EXPECT_LE(lenient, located);
+}
+
 TEST(MapUntangle, FoldedVerticesAreUntangledOnTheSurfaceWithAnchorsFixed) {
   // The identity of a bumpy sphere, with a few vertices thrown across their neighbours: their
   // triangles fold over. Anchors (every 7th vertex) must stay where they are.

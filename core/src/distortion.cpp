@@ -32,7 +32,7 @@ DistortionMetrics computeDistortion(const IndexedMesh& S, const std::vector<Vec3
   DistortionMetrics d;
   const int nf = S.faceCount();
   d.faceStretch.assign(nf, 1.0);
-  const std::vector<Vec3> targetNormal = faceNormals(T);
+  const TargetNormals targetNormals(T);
   double diag2 = 0;
   {
     Vec3 lo = Vec3::Constant(1e300), hi = -lo;
@@ -52,8 +52,7 @@ DistortionMetrics computeDistortion(const IndexedMesh& S, const std::vector<Vec3
       ++d.degenerate;
       continue;
     }
-    if (imageFlipped(i0, i1, i2, targetNormal, onTarget[t[0]].face, onTarget[t[1]].face, onTarget[t[2]].face))
-      ++d.flipped;
+    if (targetNormals.flipped(i0, i1, i2, onTarget[t[0]], onTarget[t[1]], onTarget[t[2]])) ++d.flipped;
     // Jacobian from the source triangle to its image, both in their own planes.
     const Eigen::Matrix2d J = planar(i0, i1, i2) * planar(s0, s1, s2).inverse();
     const Eigen::Vector2d sv = Eigen::JacobiSVD<Eigen::Matrix2d>(J).singularValues();

@@ -1,5 +1,7 @@
 #include "cbd/map_smoothing.h"
 
+#include "cbd/map_untangle.h"
+
 #include <algorithm>
 #include <cmath>
 #include <set>
@@ -93,18 +95,13 @@ MapSmoothingResult smoothCrossMap(const IndexedMesh& S, const Layout& Ls, const 
     std::sort(n.begin(), n.end());
     n.erase(std::unique(n.begin(), n.end()), n.end());
   }
-  std::vector<Vec3> targetNormal(T.faceCount());
-  for (int f = 0; f < T.faceCount(); ++f) {
-    const auto& t = T.faces[f];
-    targetNormal[f] = (T.positions[t[1]] - T.positions[t[0]]).cross(T.positions[t[2]] - T.positions[t[0]]).normalized();
-  }
+  const TargetNormals targetNormals(T);
   auto flipped = [&](int f) {
     const auto& t = S.faces[f];
-    const Vec3 n = (map.sourceImage[t[1]] - map.sourceImage[t[0]]).cross(map.sourceImage[t[2]] - map.sourceImage[t[0]]);
-    Vec3 nt = Vec3::Zero();
-    for (int v : t)
-      if (map.sourceToTarget[v].face >= 0) nt += targetNormal[map.sourceToTarget[v].face];
-    return n.dot(nt) <= 0;
+    const auto& x = map.sourceImage;
+    const auto& on = map.sourceToTarget;
+    const bool flat = (x[t[1]] - x[t[0]]).cross(x[t[2]] - x[t[0]]).squaredNorm() == 0;  // a collapse counts too
+    return flat || targetNormals.flipped(x[t[0]], x[t[1]], x[t[2]], on[t[0]], on[t[1]], on[t[2]]);
   };
   for (int f = 0; f < S.faceCount(); ++f) r.flippedBefore += flipped(f);
 

@@ -35,6 +35,53 @@ bool imageFlipped(const Vec3& i0, const Vec3& i1, const Vec3& i2, const std::vec
   return (i1 - i0).cross(i2 - i0).dot(targetNormalSum(normal, f0, f1, f2)) < 0;
 }
 
+TargetNormals::TargetNormals(const IndexedMesh& target) : mesh_(target), normal_(cbd::faceNormals(target)) {
+  const int nv = target.vertexCount();
+  starBegin_.assign(nv + 1, 0);
+  for (const auto& t : target.faces)
+    for (int v : t) ++starBegin_[v + 1];
+  for (int v = 0; v < nv; ++v) starBegin_[v + 1] += starBegin_[v];
+  star_.resize(starBegin_[nv]);
+  std::vector<int> fill(starBegin_.begin(), starBegin_.end() - 1);
+  for (int f = 0; f < target.faceCount(); ++f)
+    for (int v : target.faces[f]) star_[fill[v]++] = f;
+}
+
+Vec3 TargetNormals::closestAt(const FacePoint& p, const Vec3& n) const {
+  if (p.face < 0) return Vec3::Zero();
+  constexpr double eps = 1e-9;
+  const auto& t = mesh_.faces[p.face];
+  int inside = 0, corner = -1;
+  for (int k = 0; k < 3; ++k)
+    if (p.bary[k] > eps) ++inside, corner = k;
+  Vec3 best = normal_[p.face];
+  if (inside == 3) return best;
+  double bestDot = best.dot(n);
+  auto consider = [&](int f) {
+    const double d = normal_[f].dot(n);
+    if (d > bestDot) bestDot = d, best = normal_[f];
+  };
+  if (inside == 1) {  // at the vertex of `corner`: every face around it
+    const int v = t[corner];
+    for (int i = starBegin_[v]; i < starBegin_[v + 1]; ++i) consider(star_[i]);
+  } else if (inside == 2) {  // on the edge opposite the corner whose coordinate is ~0: both faces
+    int off = 0;
+    while (p.bary[off] > eps) ++off;
+    const int a = t[(off + 1) % 3], b = t[(off + 2) % 3];
+    for (int i = starBegin_[a]; i < starBegin_[a + 1]; ++i) {
+      const auto& g = mesh_.faces[star_[i]];
+      if (g[0] == b || g[1] == b || g[2] == b) consider(star_[i]);
+    }
+  }
+  return best;
+}
+
+bool TargetNormals::flipped(const Vec3& i0, const Vec3& i1, const Vec3& i2, const FacePoint& p0, const FacePoint& p1,
+                            const FacePoint& p2) const {
+  const Vec3 n = (i1 - i0).cross(i2 - i0);
+  return n.dot(closestAt(p0, n) + closestAt(p1, n) + closestAt(p2, n)) < 0;
+}
+
 namespace {
 
 /// Straight walks over a closed triangle mesh: a displacement is laid into the plane of the
@@ -151,9 +198,29 @@ double angleDistortion(const Vec3& s0, const Vec3& s1, const Vec3& s2, const Vec
 
 }  // namespace
 
-MapUntangleResult untangleCrossMap(const IndexedMesh& S, const IndexedMesh& T, const std::vector<char>& fixed,
-                                   std::vector<FacePoint>& onTarget, std::vector<Vec3>& image,
-                                   const MapUntangleOptions& options) {
+namespace {
+
+/// E_L2 of the map (as computeDistortion has it, with the arithmetic of angleDistortion).
+double l2StretchOf(const IndexedMesh& S, const std::vector<Vec3>& image) {
+  double sumAs = 0, sumAt = 0, l2 = 0;
+  for (const auto& t : S.faces) {
+    const Vec3 &s0 = S.positions[t[0]], &s1 = S.positions[t[1]], &s2 = S.positions[t[2]];
+    const Vec3 &i0 = image[t[0]], &i1 = image[t[1]], &i2 = image[t[2]];
+    const double as = 0.5 * (s1 - s0).cross(s2 - s0).norm(), at = 0.5 * (i1 - i0).cross(i2 - i0).norm();
+    double frob = 0;
+    angleDistortion(s0, s1, s2, i0, i1, i2, &frob);
+    if (!(at > 0) || frob >= 1e12) continue;
+    sumAs += as, sumAt += at, l2 += at * 0.5 * frob;
+  }
+  return sumAt > 0 ? std::sqrt(l2 / sumAt) * std::sqrt(sumAs / sumAt) : 0.0;
+}
+
+/// One run of stages 1-5 with the options' bound. Internally a triangle is bad when it faces
+/// against the normals of the target faces its corners were located in (`imageFlipped`): at a
+/// corner on a target edge or vertex that is stricter than the metrics' test, never looser.
+MapUntangleResult untangleOnce(const IndexedMesh& S, const IndexedMesh& T, const std::vector<char>& fixed,
+                               std::vector<FacePoint>& onTarget, std::vector<Vec3>& image,
+                               const MapUntangleOptions& options) {
   MapUntangleResult r;
   const int nv = S.vertexCount(), nf = S.faceCount();
   const SurfaceWalker walker(T);
@@ -504,20 +571,7 @@ MapUntangleResult untangleCrossMap(const IndexedMesh& S, const IndexedMesh& T, c
   // the polish then spread the distortion such moves leave behind).
   // Each such attempt is kept only when it does not raise the map's L2 stretch by more than
   // `maxStretchGrowth` (the metric weighs the stretched triangles such moves leave by area).
-  auto l2Stretch = [&] {
-    double sumAs = 0, sumAt = 0, l2 = 0;
-    for (int f = 0; f < nf; ++f) {
-      const auto& t = S.faces[f];
-      const Vec3 &s0 = S.positions[t[0]], &s1 = S.positions[t[1]], &s2 = S.positions[t[2]];
-      const Vec3 &i0 = image[t[0]], &i1 = image[t[1]], &i2 = image[t[2]];
-      const double as = 0.5 * (s1 - s0).cross(s2 - s0).norm(), at = 0.5 * (i1 - i0).cross(i2 - i0).norm();
-      double frob = 0;
-      angleDistortion(s0, s1, s2, i0, i1, i2, &frob);
-      if (!(at > 0) || frob >= 1e12) continue;
-      sumAs += as, sumAt += at, l2 += at * 0.5 * frob;
-    }
-    return sumAt > 0 ? std::sqrt(l2 / sumAt) * std::sqrt(sumAs / sumAt) : 0.0;
-  };
+  auto l2Stretch = [&] { return l2StretchOf(S, image); };
   for (double f = options.lastResortFactor; badNow > 0 && f > 1 && f <= options.lastResortFactor * options.lastResortFactor;
        f *= options.lastResortFactor) {
     const std::vector<FacePoint> keepFp = onTarget;
@@ -547,6 +601,61 @@ MapUntangleResult untangleCrossMap(const IndexedMesh& S, const IndexedMesh& T, c
     else if (e.bad) ++r.flippedAfter;
   }
   r.movedVertices = static_cast<int>(std::count(moved.begin(), moved.end(), 1));
+  return r;
+}
+
+}  // namespace
+
+MapUntangleResult untangleCrossMap(const IndexedMesh& S, const IndexedMesh& T, const std::vector<char>& fixed,
+                                   std::vector<FacePoint>& onTarget, std::vector<Vec3>& image,
+                                   const MapUntangleOptions& options) {
+  const TargetNormals normals(T);
+  double diag2 = 0;
+  {
+    Vec3 lo = Vec3::Constant(1e300), hi = -lo;
+    for (const Vec3& p : T.positions) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+    diag2 = (hi - lo).squaredNorm();
+  }
+  // Flipped triangles as the metrics count them (degenerate ones apart).
+  auto flips = [&](const std::vector<FacePoint>& on, const std::vector<Vec3>& x) {
+    int n = 0;
+    for (const auto& t : S.faces) {
+      if (on[t[0]].face < 0 || on[t[1]].face < 0 || on[t[2]].face < 0) continue;
+      if (0.5 * (x[t[1]] - x[t[0]]).cross(x[t[2]] - x[t[0]]).norm() <= 1e-12 * diag2) continue;
+      n += normals.flipped(x[t[0]], x[t[1]], x[t[2]], on[t[0]], on[t[1]], on[t[2]]);
+    }
+    return n;
+  };
+  MapUntangleResult r;
+  r.flippedBefore = flips(onTarget, image);
+  if (r.flippedBefore == 0) return r;  // nothing to untangle: the map is left as it is
+  const std::vector<FacePoint> startOn = onTarget;
+  const std::vector<Vec3> startImage = image;
+  r = untangleOnce(S, T, fixed, onTarget, image, options);
+  r.flippedBefore = flips(startOn, startImage);
+  r.flippedAfter = flips(onTarget, image);
+  r.attempts = 1;
+  // Where flips survive, the whole run again from the start with other bounds; the map with
+  // the fewest flips, then the lowest E_L2, is kept.
+  double bestL2 = r.flippedAfter > 0 ? l2StretchOf(S, image) : 0.0;
+  for (const double bound : options.retryDistortions) {
+    if (r.flippedAfter == 0) break;
+    std::vector<FacePoint> on = startOn;
+    std::vector<Vec3> x = startImage;
+    MapUntangleOptions o = options;
+    o.maxDistortion = bound;
+    MapUntangleResult t = untangleOnce(S, T, fixed, on, x, o);
+    t.flippedBefore = r.flippedBefore;
+    t.flippedAfter = flips(on, x);
+    t.attempts = r.attempts + 1;
+    const double l2 = l2StretchOf(S, x);
+    if (t.flippedAfter < r.flippedAfter || (t.flippedAfter == r.flippedAfter && l2 < bestL2)) {
+      r = t, bestL2 = l2;
+      onTarget = std::move(on), image = std::move(x);
+    } else {
+      r.attempts = t.attempts;
+    }
+  }
   return r;
 }
 

@@ -7,7 +7,7 @@
 /// combination maps onto the same triangle), but M_st joins the images of the source's
 /// vertices by straight chords. Where a source triangle's image covers target faces whose
 /// parameterization Jacobians differ a lot, or straddles a sharp crease of the target, the
-/// chord triangle can face the wrong way: a flip (`imageFlipped`). This stage moves the images
+/// chord triangle can face the wrong way: a flip (`TargetNormals::flipped`). This stage moves the images
 /// of the vertices of such triangles over the target surface (straight walks across target
 /// faces, so an image never leaves the surface) to unflip them:
 /// 1. local moves of a flipped triangle's vertices (towards averages of the neighbours'
@@ -21,9 +21,12 @@
 ///    over each connected region of rings at once, kept when it has fewer bad triangles;
 ///    then, if flips are left, stages 1-4 once more with looser bounds (`lastResortFactor`),
 ///    each attempt kept only if E_L2 grows by at most `maxStretchGrowth`;
-/// 5. `polishSweeps` sweeps over every vertex that only lower distortion, never adding a flip.
-/// Anchors never move; a map without flips and without distortion to lower (the identity) is
-/// returned unchanged.
+/// 5. `polishSweeps` sweeps over every vertex that only lower distortion, never adding a flip;
+/// 6. if flips are left, all of it again from the composed map with the bounds of
+///    `retryDistortions`, keeping the best.
+/// Internally a triangle counts as flipped by the stricter `imageFlipped`; what is reported is
+/// the metrics' count (`TargetNormals::flipped`). Anchors never move; a map without flipped
+/// triangles (the identity, say) is returned unchanged.
 
 #include <vector>
 
@@ -53,6 +56,11 @@ struct MapUntangleOptions {
   double lastResortFactor = 10.0;
   /// ... each such attempt kept only if the map's L2 stretch grows by at most this factor.
   double maxStretchGrowth = 1.05;
+  /// When flips survive all that, the whole untangling again from the composed map with each
+  /// of these `maxDistortion` bounds in turn, until one leaves no flip; the result with the
+  /// fewest flips, then the lowest E_L2, is kept (the outcome of the greedy local moves
+  /// depends on the bound in no monotone way). Empty: one run.
+  std::vector<double> retryDistortions = {5.0, 3.0, 7.0};
 };
 
 /// What `untangleCrossMap` did.
@@ -63,11 +71,36 @@ struct MapUntangleResult {
   int degenerateAfter = 0;
   int moves = 0;          ///< accepted vertex moves
   int movedVertices = 0;  ///< distinct vertices whose image changed
+  int attempts = 0;       ///< runs of the whole untangling (0: there was no flip)
 };
 
-/// Whether the image triangle (i0, i1, i2) of a source face is flipped: its normal points
-/// against the sum of the normals of the target faces its three vertices lie on.
-/// `targetFaceNormal` holds the unit normal of every target face.
+/// The target's surface normals where image points lie, for the flip count of the metrics. A
+/// point inside a face has that face's normal. A point on an edge or at a vertex (a barycentric
+/// coordinate below 1e-9) has the normals of every face touching it (the normal cone of a
+/// crease or corner), and a triangle is measured against the one closest to its own: so the
+/// identity map of a mesh with sharp creases has no flipped triangle, while a triangle folded
+/// over a face still is.
+class TargetNormals {
+ public:
+  explicit TargetNormals(const IndexedMesh& target);
+  const std::vector<Vec3>& faceNormals() const { return normal_; }
+  /// Of the normals at p, the one most aligned with n (zero when p is on no face).
+  Vec3 closestAt(const FacePoint& p, const Vec3& n) const;
+  /// Whether the image triangle (i0, i1, i2), whose corners lie at p0, p1, p2 on the target,
+  /// is flipped: its normal points against the sum of the target normals at its corners.
+  bool flipped(const Vec3& i0, const Vec3& i1, const Vec3& i2, const FacePoint& p0, const FacePoint& p1,
+               const FacePoint& p2) const;
+
+ private:
+  const IndexedMesh& mesh_;
+  std::vector<Vec3> normal_;
+  std::vector<int> starBegin_, star_;  // faces around each vertex (CSR)
+};
+
+/// The untangling's own, stricter test: the image triangle's normal points against the sum of
+/// the normals of the target faces its three corners were located in (at a corner on an edge
+/// or vertex, one of the faces touching it). Whatever it passes, `TargetNormals::flipped`
+/// passes. `targetFaceNormal` holds the unit normal of every target face.
 bool imageFlipped(const Vec3& i0, const Vec3& i1, const Vec3& i2, const std::vector<Vec3>& targetFaceNormal,
                   int face0, int face1, int face2);
 
