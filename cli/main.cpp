@@ -177,6 +177,7 @@ json layoutJson(const cbd::LayoutPair& p) {
   if (p.method == cbd::LayoutMethod::Voronoi) {
     // "diagram": whose Voronoi diagram gave the layout (the target's when the source's detoured).
     l["diagram"] = p.reversed ? "target" : "source";
+    l["same_surface"] = p.sameSurface;
     if (p.triedReverse) l["other_direction_detour"] = p.reverseDetour;
     l["cut_paths"] = p.sourceStats.cutPaths;
     l["triangulation_paths"] = p.sourceStats.triangulationPaths;
@@ -204,9 +205,12 @@ void printLayout(const cbd::LayoutPair& p) {
     std::printf("layout  voronoi: %zu edges (%d across Voronoi cuts, %d triangulating), %zu patches, %d multiple linkages\n",
                 p.source.edges.size(), p.sourceStats.cutPaths - p.sourceStats.removedPaths,
                 p.sourceStats.triangulationPaths, p.source.patches.size(), p.source.multipleLinkages());
-    std::printf("        %s: %d paths inside the two clusters, %d in the whole region; detour %.2f\n",
-                p.reversed ? "traced on the source" : "target", p.targetStats.embeddedInClusters,
-                p.targetStats.embeddedInRegion, p.detour);
+    if (p.sameSurface)
+      std::printf("        target: the source itself (same vertices, faces and anchors): the same layout\n");
+    else
+      std::printf("        %s: %d paths inside the two clusters, %d in the whole region; detour %.2f\n",
+                  p.reversed ? "traced on the source" : "target", p.targetStats.embeddedInClusters,
+                  p.targetStats.embeddedInRegion, p.detour);
     if (p.reversed)
       std::printf("        (the layout traced from the source's diagram detoured by %.2f: this one comes from the "
                   "target's Voronoi diagram)\n", p.reverseDetour);

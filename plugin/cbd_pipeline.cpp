@@ -190,6 +190,7 @@ std::string layoutLine(const cbd::LayoutPair& p) {
       << p.sourceStats.triangulationPaths << " triangulating, " << p.sourceStats.removedPaths << " removed"
       << "; target: " << p.targetStats.embeddedInClusters << " paths inside the two clusters, "
       << p.targetStats.embeddedInRegion << " in the whole region, " << p.targetStats.postponements << " postponements";
+    if (p.sameSurface) s << " (the target is the source itself: the same layout)";
     if (p.reversed)
       s << " (the source's layout detoured, detour " << p.reverseDetour << ": this one comes from the target's Voronoi "
         << "diagram, traced on the source; 'source' and 'target' above are swapped)";

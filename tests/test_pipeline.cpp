@@ -94,3 +94,46 @@ TEST(Pipeline, CowToBullTakesTheBullsDiagramWhenTheCowsTwists) {
   EXPECT_EQ(r.metrics.degenerate, 0);
   EXPECT_TRUE(std::isfinite(r.metrics.eL2) && r.metrics.eL2 >= 1.0);
 }
+
+TEST(Pipeline, AMeshOntoItselfIsTheIdentity) {
+  // The identity pair, with any anchors, for both methods: E_L2 = 1, E_ang = 0, every vertex
+  // mapped onto itself, nothing flipped. The cow has sharp creases (the located-face flip test
+  // saw flips on its identity); the spiky sphere's are sharper still.
+  struct Case {
+    std::string name;
+    IndexedMesh mesh;
+    int anchors;
+  };
+  std::vector<Case> cases;
+  IndexedMesh spiky = fx::icosphere(3);
+  for (int v = 0; v < spiky.vertexCount(); v += 5) spiky.positions[v] *= 1.4;
+  cases.push_back({"spiky sphere", spiky, 10});
+  const std::string cow = std::string(CBD_CGAL_MESHES) + "/cow.off";
+  if (std::filesystem::exists(cow)) {
+    LoadedInput in;
+    loadAndValidate({cow, cow, std::string(CBD_EXAMPLES) + "/cow_picked_points.pp",
+                     std::string(CBD_EXAMPLES) + "/cow_picked_points.pp"}, {}, in);
+    ASSERT_TRUE(in.report.status.ok()) << in.report.status.message;
+    cases.push_back({"cow", in.source, 16});
+  }
+  for (const Case& c : cases)
+    for (LayoutMethod method : {LayoutMethod::Voronoi, LayoutMethod::Greedy}) {
+      SCOPED_TRACE(c.name + ", " + layoutMethodName(method));
+      const std::vector<int> anchors = farthestPointSampling(c.mesh, c.anchors);
+      CrossParameterizationOptions o;
+      o.method = method;
+      const CrossParameterizationResult r = crossParameterize(c.mesh, anchors, c.mesh, anchors, 2, o);
+      ASSERT_TRUE(r.status.ok()) << r.status.message;
+      const double diag = boundingBoxDiagonal(c.mesh);
+      double worst = 0;
+      for (int v = 0; v < c.mesh.vertexCount(); ++v) worst = std::max(worst, (r.map.sourceImage[v] - c.mesh.positions[v]).norm());
+      EXPECT_LT(worst, 1e-6 * diag);
+      EXPECT_NEAR(r.metrics.eL2, 1.0, 1e-6);
+      EXPECT_NEAR(r.metrics.eL2Inverse, 1.0, 1e-6);
+      EXPECT_NEAR(r.metrics.eAng, 0.0, 1e-6);
+      EXPECT_EQ(r.metrics.flipped, 0);
+      EXPECT_EQ(r.metrics.degenerate, 0);
+      EXPECT_EQ(r.untangleSource.movedVertices, 0);
+      EXPECT_EQ(r.layouts.sameSurface, method == LayoutMethod::Voronoi);
+    }
+}

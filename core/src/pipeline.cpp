@@ -68,6 +68,18 @@ LayoutPair buildLayouts(const IndexedMesh& source, const std::vector<int>& sa, c
     p.target = std::move(p.greedyStats.target);
     p.detour = lengthDetour(p.source, p.target);
     if (const LayoutCheck c = validateLayout(p.source, euler); !c.status) return p.status = c.status, p;
+  } else if (source.positions == target.positions && source.faces == target.faces && sa == ta) {
+    // One surface, one diagram: the layout on the target is the source's.
+    SourceLayoutOptions so;
+    so.edgeNodes = options.edgeNodes;
+    p.sourceStats = buildSourceLayout(source, sa, so);
+    p.times.voronoi = p.sourceStats.voronoiSeconds;
+    p.times.sourceLayout = p.sourceStats.layoutSeconds;
+    if (!p.sourceStats.status) return p.status = p.sourceStats.status, p;
+    p.source = std::move(p.sourceStats.layout);
+    p.target = p.source;
+    p.sameSurface = true;
+    if (const LayoutCheck c = validateLayout(p.source, euler); !c.status) return p.status = c.status, p;
   } else {
     p = voronoiLayouts(source, sa, target, ta, euler, options);
     // A target layout whose paths are far longer than their source counterparts has detoured

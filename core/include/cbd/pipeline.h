@@ -64,6 +64,10 @@ struct LayoutPair {
   bool reversed = false;            ///< ... and that one was kept (its statistics are in sourceStats /
                                     ///< targetStats with the roles of the surfaces swapped)
   double reverseDetour = 0.0;       ///< the detour of the layout pair not kept (0: failed)
+  /// Voronoi: the target is the source itself (same vertices, faces and anchors), so its layout
+  /// is the source's rather than one traced again in Procedure 1 order (which, on the same
+  /// surface, can take other shortest paths where paths compete for vertices).
+  bool sameSurface = false;
 };
 
 /// How much the paths of two isomorphic layouts disagree in length: the mean over edges of
