@@ -106,11 +106,13 @@ LayoutPair buildLayouts(const IndexedMesh& source, const std::vector<int>& sa, c
     }
     if (!p.status) return p;
   }
-  // The Voronoi layouts were checked as they were built (the layout the diagram gave before
-  // the other was traced from it); both builders end with checkIsomorphic.
-  if (p.method == LayoutMethod::Voronoi && p.reversed)
-    if (const LayoutCheck c = validateLayout(p.source, euler); !c.status) return p.status = c.status, p;
-  if (const LayoutCheck c = validateLayout(p.target, euler); !c.status) return p.status = c.status, p;
+  // Check the layout not checked yet: the Voronoi method checked the one its diagram gave
+  // before tracing the other from it (on a mesh paired with itself both are that one), the
+  // greedy baseline the source's; both builders end with checkIsomorphic.
+  const Layout* unchecked = &p.target;
+  if (p.method == LayoutMethod::Voronoi) unchecked = p.sameSurface ? nullptr : p.reversed ? &p.source : &p.target;
+  if (unchecked)
+    if (const LayoutCheck c = validateLayout(*unchecked, euler); !c.status) return p.status = c.status, p;
   return p;
 }
 
