@@ -238,7 +238,7 @@ IndexedMesh subdivide(const IndexedMesh& m) {
 }
 
 /// Layout time against anchors (on one mesh) and against mesh size (subdivision), both
-/// methods, the mesh paired with itself; plus one full Dijkstra sweep as the lower bound.
+/// methods, the mesh paired with a turned copy of itself; plus one full Dijkstra sweep as the lower bound.
 int scaling(const std::string& meshPath, const fs::path& out, int maxLevel, const std::vector<int>& counts) {
   Mesh vm;
   if (!loadMesh(meshPath, vm).status) {
@@ -273,7 +273,12 @@ int scaling(const std::string& meshPath, const fs::path& out, int maxLevel, cons
     const Run d = sweep(m, a);
     for (const Method& meth : methods()) {
       if (meth.name == "voronoi-E1") continue;
-      const Run r = forked([&] { return runPipeline(m, a, m, a, euler, meth.options, true); });
+      // The target is the mesh turned a quarter about z (exactly: coordinates swapped): the same
+      // surface, but not the same input, so the Voronoi method traces its target layout rather
+      // than taking the source's (pipeline.h, LayoutPair::sameSurface).
+      IndexedMesh turned = m;
+      for (Vec3& p : turned.positions) p = Vec3(-p.y(), p.x(), p.z());
+      const Run r = forked([&] { return runPipeline(m, a, turned, a, euler, meth.options, true); });
       csv << exp << ',' << m.vertexCount() << ',' << n << ',' << meth.name << ',' << (r.ok ? "ok" : "failed") << ','
           << r.tVoronoi << ',' << r.tSource << ',' << r.tTarget << ',' << r.tLayout << ',' << d.tTotal << ','
           << r.peakMB << '\n';

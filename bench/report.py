@@ -188,18 +188,21 @@ optimal (the issue's definition); E_ang is the area-weighted (σ1/σ2 + σ2/σ1)
 
 {md_speedup()}
 
-## Scaling with the number of anchors (diplodocus, 23982 vertices, paired with itself)
+## Scaling with the number of anchors (diplodocus, 23982 vertices, onto a turned copy of itself)
 
 {md_scaling(scal_a, 'anchors')}
 
 ![scaling with anchors](results/plots/scaling_anchors.png)
 
-## Scaling with mesh size (the cow, 1-to-4 subdivided, 32 anchors, paired with itself)
+## Scaling with mesh size (the cow, 1-to-4 subdivided, 32 anchors, onto a turned copy of itself)
 
 {md_scaling(scal_s, 'vertices')}
 
 ![scaling with size](results/plots/scaling_size.png)
 
+Each mesh is paired with a copy of itself turned a quarter about z (coordinates swapped, so
+every length is the same to the last bit): the same surface, but not the same input, so the
+Voronoi method traces its target layout (for an input paired with itself it takes the source's).
 "one Dijkstra sweep" is a single-source search over the whole edge-node graph (vertices plus
 adaptive edge nodes), the paper's lower bound for a layout; "layout / sweep" is the ratio.
 Memory goes to the refined half-edge meshes, the edge-node table and the Dijkstra scratch
