@@ -59,20 +59,27 @@ bool onPath(const RefinedMesh& m, const std::vector<int>& edgePath, int v) {
 /// Everything about one region, given its faces: Euler characteristic of the region cut open
 /// along its paths (V - E + F, one wedge corner per boundary halfedge), boundary loops with
 /// their anchor corners and sides, anchors inside.
+///
+/// With `flood`, `faces` holds only the first face on entry: the flood fill that finds the rest
+/// (across edges on no path) runs in the same pass and appends them, breadth first, so loops and
+/// interior anchors come out in another order than from the same faces given in another order
+/// (the signature does not depend on it).
 Region describeRegion(const RefinedMesh& m, const std::vector<int>& edgePath, const std::vector<int>& anchorOf,
-                      const std::vector<int>& faces, RegionScratch& sc) {
+                      std::vector<int>& faces, RegionScratch& sc, bool flood = false) {
   sc.fit(m);
   Region reg;
-  reg.faces = static_cast<int>(faces.size());
   long long V = 0, E = 0;
   std::vector<int> boundary;
-  for (int f : faces)
-    for (int k = 0, h = m.faceHalfedge(f); k < 3; ++k, h = m.next(h)) {
+  if (flood) sc.faceMark[faces[0]] = sc.stamp;
+  for (size_t i = 0; i < faces.size(); ++i)
+    for (int k = 0, h = m.faceHalfedge(faces[i]); k < 3; ++k, h = m.next(h)) {
       if (edgePath[RefinedMesh::edgeOf(h)] >= 0) {
         boundary.push_back(h);
         ++E, ++V;
-      } else if (h < RefinedMesh::twin(h)) {
-        ++E;  // an interior edge: both its halfedges are in the region, count it once
+      } else {
+        const int t = RefinedMesh::twin(h);
+        if (h < t) ++E;  // an interior edge: both its halfedges are in the region, count it once
+        if (flood && sc.faceMark[m.face(t)] != sc.stamp) sc.faceMark[m.face(t)] = sc.stamp, faces.push_back(m.face(t));
       }
       const int v = m.from(h);
       if (sc.vertexMark[v] == sc.stamp) continue;
@@ -81,6 +88,7 @@ Region describeRegion(const RefinedMesh& m, const std::vector<int>& edgePath, co
       ++V;
       if (v < static_cast<int>(anchorOf.size()) && anchorOf[v] >= 0) reg.interiorAnchors.push_back(anchorOf[v]);
     }
+  reg.faces = static_cast<int>(faces.size());
   reg.eulerCharacteristic = static_cast<int>(V - E + reg.faces);
   for (int h0 : boundary) {
     if (sc.halfedgeMark[h0] == sc.stamp) continue;
@@ -104,57 +112,11 @@ Region describeRegion(const RefinedMesh& m, const std::vector<int>& edgePath, co
   return reg;
 }
 
-/// describeRegion fused with the flood fill that finds the region's faces (one pass over
-/// them). `faces` receives them in breadth-first order, so loops and interior anchors come out
-/// in another order than from describeRegion: use it where only the signature counts.
+/// The region holding face f0, found and described in one pass; `faces` receives its faces.
 Region floodRegion(const RefinedMesh& m, const std::vector<int>& edgePath, const std::vector<int>& anchorOf, int f0,
                    RegionScratch& sc, std::vector<int>& faces) {
-  sc.fit(m);
-  Region reg;
-  long long V = 0, E = 0;
-  std::vector<int> boundary;
   faces.assign(1, f0);
-  sc.faceMark[f0] = sc.stamp;
-  for (size_t i = 0; i < faces.size(); ++i)
-    for (int k = 0, h = m.faceHalfedge(faces[i]); k < 3; ++k, h = m.next(h)) {
-      if (edgePath[RefinedMesh::edgeOf(h)] >= 0) {
-        boundary.push_back(h);
-        ++E, ++V;
-      } else {
-        const int t = RefinedMesh::twin(h);
-        if (h < t) ++E;
-        const int g = m.face(t);
-        if (sc.faceMark[g] != sc.stamp) sc.faceMark[g] = sc.stamp, faces.push_back(g);
-      }
-      const int v = m.from(h);
-      if (sc.vertexMark[v] == sc.stamp) continue;
-      sc.vertexMark[v] = sc.stamp;
-      if (onPath(m, edgePath, v)) continue;
-      ++V;
-      if (v < static_cast<int>(anchorOf.size()) && anchorOf[v] >= 0) reg.interiorAnchors.push_back(anchorOf[v]);
-    }
-  reg.faces = static_cast<int>(faces.size());
-  reg.eulerCharacteristic = static_cast<int>(V - E + reg.faces);
-  for (int h0 : boundary) {
-    if (sc.halfedgeMark[h0] == sc.stamp) continue;
-    RegionLoop loop;
-    int h = h0;
-    do {
-      sc.halfedgeMark[h] = sc.stamp;
-      loop.halfedges.push_back(h);
-      h = nextBoundary(m, edgePath, h);
-    } while (h != h0 && sc.halfedgeMark[h] != sc.stamp);
-    for (int x : loop.halfedges) {
-      const int v = m.from(x);
-      if (v < static_cast<int>(anchorOf.size()) && anchorOf[v] >= 0) {
-        loop.corners.push_back(anchorOf[v]);
-        loop.cornerHalfedge.push_back(x);
-        loop.sides.push_back(edgePath[RefinedMesh::edgeOf(x)]);
-      }
-    }
-    reg.loops.push_back(std::move(loop));
-  }
-  return reg;
+  return describeRegion(m, edgePath, anchorOf, faces, sc, true);
 }
 
 RegionSignature signatureOf(const Region& r, const std::vector<LayoutEdge>& edges) {
@@ -205,7 +167,7 @@ RegionMap analyzeRegions(const RefinedMesh& m, const std::vector<int>& edgePath,
     }
   }
   RegionScratch sc;
-  for (const auto& faces : members) r.regions.push_back(describeRegion(m, edgePath, anchorOfVertex, faces, sc));
+  for (auto& faces : members) r.regions.push_back(describeRegion(m, edgePath, anchorOfVertex, faces, sc));
   return r;
 }
 
