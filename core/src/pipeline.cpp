@@ -28,9 +28,11 @@ double lengthDetour(const Layout& source, const Layout& target) {
 
 namespace {
 
-/// The Voronoi method with `from` as the surface whose diagram gives the layout.
+/// The Voronoi method with `from` as the surface whose diagram gives the layout. `ontoIsFrom`:
+/// `onto` is `from` itself with the same anchors, and gets the same layout.
 LayoutPair voronoiLayouts(const IndexedMesh& from, const std::vector<int>& fa, const IndexedMesh& onto,
-                          const std::vector<int>& ta, int euler, const CrossParameterizationOptions& options) {
+                          const std::vector<int>& ta, int euler, const CrossParameterizationOptions& options,
+                          bool ontoIsFrom = false) {
   LayoutPair p;
   p.method = LayoutMethod::Voronoi;
   SourceLayoutOptions so;
@@ -40,6 +42,12 @@ LayoutPair voronoiLayouts(const IndexedMesh& from, const std::vector<int>& fa, c
   p.times.sourceLayout = p.sourceStats.layoutSeconds;
   if (!p.sourceStats.status) return p.status = p.sourceStats.status, p;
   if (const LayoutCheck c = validateLayout(p.sourceStats.layout, euler); !c.status) return p.status = c.status, p;
+  if (ontoIsFrom) {
+    p.source = std::move(p.sourceStats.layout);
+    p.target = p.source;
+    p.sameSurface = true;
+    return p;
+  }
   TargetLayoutOptions to;
   to.edgeNodes = options.edgeNodes;
   p.targetStats = buildTargetLayout(p.sourceStats.layout, onto, ta, to);
@@ -68,23 +76,13 @@ LayoutPair buildLayouts(const IndexedMesh& source, const std::vector<int>& sa, c
     p.target = std::move(p.greedyStats.target);
     p.detour = lengthDetour(p.source, p.target);
     if (const LayoutCheck c = validateLayout(p.source, euler); !c.status) return p.status = c.status, p;
-  } else if (source.positions == target.positions && source.faces == target.faces && sa == ta) {
-    // One surface, one diagram: the layout on the target is the source's.
-    SourceLayoutOptions so;
-    so.edgeNodes = options.edgeNodes;
-    p.sourceStats = buildSourceLayout(source, sa, so);
-    p.times.voronoi = p.sourceStats.voronoiSeconds;
-    p.times.sourceLayout = p.sourceStats.layoutSeconds;
-    if (!p.sourceStats.status) return p.status = p.sourceStats.status, p;
-    p.source = std::move(p.sourceStats.layout);
-    p.target = p.source;
-    p.sameSurface = true;
-    if (const LayoutCheck c = validateLayout(p.source, euler); !c.status) return p.status = c.status, p;
   } else {
-    p = voronoiLayouts(source, sa, target, ta, euler, options);
+    // One surface with the same anchors on both sides: one diagram, one layout for both.
+    const bool same = source.positions == target.positions && source.faces == target.faces && sa == ta;
+    p = voronoiLayouts(source, sa, target, ta, euler, options, same);
     // A target layout whose paths are far longer than their source counterparts has detoured
     // around anchors (a twist): the target's own Voronoi diagram may be the better cue.
-    const bool retry = options.reverseDetour > 0 && (!p.status || p.detour > options.reverseDetour);
+    const bool retry = !same && options.reverseDetour > 0 && (!p.status || p.detour > options.reverseDetour);
     if (retry) {
       const StageTimes first = p.times;
       LayoutPair q = voronoiLayouts(target, ta, source, sa, euler, options);
