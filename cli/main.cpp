@@ -8,6 +8,8 @@
 #include <iostream>
 #include <string>
 
+#include <unistd.h>
+
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
@@ -29,10 +31,25 @@ json meshJson(const cbd::MeshReport& m) {
               {"bbox_diagonal", m.bboxDiagonal}};
 }
 
+/// With `--json -`: the real standard output, kept for the report alone, while the human-readable
+/// log goes to standard error (so that stdout parses as JSON).
+int jsonStdout = -1;
+
 bool writeJson(const std::string& path, const json& j) {
   if (path.empty()) return true;
   if (path == "-") {
-    std::cout << j.dump(2) << "\n";
+    const std::string text = j.dump(2) + "\n";
+    if (jsonStdout < 0) {
+      std::cout << text;
+      return static_cast<bool>(std::cout.flush());
+    }
+    std::fflush(stdout);
+    size_t done = 0;
+    while (done < text.size()) {
+      const ssize_t n = ::write(jsonStdout, text.data() + done, text.size() - done);
+      if (n <= 0) return false;
+      done += static_cast<size_t>(n);
+    }
     return true;
   }
   namespace fs = std::filesystem;
@@ -82,7 +99,7 @@ void addPairOptions(CLI::App* cmd, PairArgs& a) {
                   "largest allowed anchor-to-vertex distance, as a fraction of the bounding-box diagonal")
       ->capture_default_str()
       ->check(CLI::Range(0.0, 1.0));
-  cmd->add_option("--json", a.jsonPath, "also write a JSON report to this file ('-' for stdout)");
+  cmd->add_option("--json", a.jsonPath, "also write a JSON report to this file ('-': to stdout, the log then goes to stderr)");
 }
 
 void printMesh(const char* role, const std::string& path, const cbd::MeshReport& m) {
@@ -327,7 +344,8 @@ int runMap(const RunArgs& a) {
     const auto &u = r.untangleSource, &w = r.untangleTarget;
     j["untangle"] = {{"flipped_before", u.flippedBefore},         {"flipped_after", u.flippedAfter},
                      {"moved_vertices", u.movedVertices},         {"inverse_flipped_before", w.flippedBefore},
-                     {"inverse_flipped_after", w.flippedAfter},   {"inverse_moved_vertices", w.movedVertices}};
+                     {"inverse_flipped_after", w.flippedAfter},   {"inverse_moved_vertices", w.movedVertices},
+                     {"attempts", u.attempts},                    {"inverse_attempts", w.attempts}};
   }
   j["metrics"] = {{"e_ang", m.eAng},     {"e_ang_deg", m.eAngDegrees}, {"e_l2", m.eL2},
                   {"e_l2_inverse", m.eL2Inverse}, {"flipped", m.flipped}, {"degenerate", m.degenerate}};
@@ -440,7 +458,7 @@ int main(int argc, char** argv) {
     cmd->add_option("--snap-tolerance", r.snapTolerance, "largest anchor snap distance (fraction of bbox diagonal)")
         ->capture_default_str()
         ->check(CLI::Range(0.0, 1.0));
-    cmd->add_option("--json", r.jsonPath, "also write a JSON report to this file ('-' for stdout)");
+    cmd->add_option("--json", r.jsonPath, "also write a JSON report to this file ('-': to stdout, the log then goes to stderr)");
   };
   RunArgs layout;
   CLI::App* cmdLayout = app.add_subcommand(
@@ -493,6 +511,13 @@ int main(int argc, char** argv) {
     return cbd::exitCode(cbd::ErrorCode::InvalidArgument);
   }
 
+  // `--json -`: the report alone on stdout, the log on stderr.
+  const std::string* jsonPath = *cmdCheck ? &check.jsonPath : *cmdLayout ? &layout.jsonPath : *cmdMap ? &map.jsonPath : nullptr;
+  if (jsonPath && *jsonPath == "-") {
+    std::fflush(stdout);
+    jsonStdout = ::dup(STDOUT_FILENO);
+    if (jsonStdout < 0 || ::dup2(STDERR_FILENO, STDOUT_FILENO) < 0) jsonStdout = -1;
+  }
   try {
     if (*cmdCheck) return runCheck(check);
     if (*cmdLayout) return runLayout(layout);

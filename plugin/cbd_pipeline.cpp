@@ -335,7 +335,7 @@ cbd::Status runPipeline(const PipelineRequest& rq, vcg::CallBackPos* cb) {
         std::to_string(r.smoothing.flippedBefore) + " -> " + std::to_string(r.smoothing.flippedAfter));
   log("untangle: flipped triangles of M_st " + std::to_string(r.untangleSource.flippedBefore) + " -> " +
       std::to_string(r.untangleSource.flippedAfter) + " (" + std::to_string(r.untangleSource.movedVertices) +
-      " vertices moved over the target)");
+      " vertices moved over the target, " + std::to_string(r.untangleSource.attempts) + " runs)");
   log("map: E_ang " + fixed(m.eAng, 4) + " (" + fixed(m.eAngDegrees, 2) + " deg), E_L2 " + fixed(m.eL2, 4) +
       " (inverse " + fixed(m.eL2Inverse, 4) + "), " + std::to_string(m.flipped) + " flipped, " +
       std::to_string(m.degenerate) + " degenerate triangles");

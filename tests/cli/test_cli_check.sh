@@ -163,6 +163,16 @@ if [ -f "$MESHES/cow.off" ] && [ -f "$EXAMPLES/cow_picked_points.pp" ]; then
   n=$(python3 -c "import json;d=json.load(open('cow_bull.json'));print(d['source']['anchors'], d['source']['genus'], d['target']['genus'], d['source']['vertices'])")
   set -- $n
   [ "$1" -ge 20 ] && [ "$2" = 0 ] && [ "$3" = 0 ] && [ "$4" = 2904 ] && ok "cow/bull report: $n" || bad "cow/bull report: $n"
+  # --json -: the report alone on stdout (it parses), the log on stderr.
+  "$CBD" check --source "$MESHES/cow.off" --target "$MESHES/bull.off" \
+    --source-anchors "$EXAMPLES/cow_picked_points.pp" --target-anchors "$EXAMPLES/bull_picked_points.pp" \
+    --json - >stdout.json 2>stdout.err; rc=$?
+  st=$(python3 -c "import json;print(json.load(open('stdout.json'))['status'])" 2>/dev/null)
+  if [ "$rc" = 0 ] && [ "$st" = ok ] && grep -q "pair can be processed" stdout.err; then
+    ok "--json -: JSON alone on stdout, log on stderr"
+  else
+    bad "--json -: exit $rc, status '$st'"
+  fi
   # The source layout of the bundled example: outputs exist, counts are those of a triangulation.
   "$CBD" layout --source "$MESHES/cow.off" --source-anchors "$EXAMPLES/cow_picked_points.pp" --out layout_cow \
     --json layout_cow.json >/dev/null 2>layout.err; rc=$?
