@@ -319,10 +319,10 @@ std::vector<RegionSignature> RegionTracker::add(const std::vector<int>& chain, i
     undo_.push_back(std::move(u));
     return {sig_[region]};
   }
-  // The side `complete` is cut off: describe it, and the rest from what changed.
-  std::vector<int> faces;
-  const RegionSignature small =
-      signatureOf(floodRegion(mesh_, edgePath_, anchorOf_, queue[complete][0], scratch_, faces), edges_);
+  // The side `complete` is cut off, its faces all in its queue: describe it, and the rest from
+  // what changed.
+  std::vector<int>& faces = queue[complete];
+  const RegionSignature small = signatureOf(describeRegion(mesh_, edgePath_, anchorOf_, faces, scratch_), edges_);
   const std::vector<std::pair<int, int>>& bigLoop = complete == 0 ? right : left;
   RegionSignature big;
   big.euler = old.euler + 1 - insideEnds - small.euler;

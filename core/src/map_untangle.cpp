@@ -215,7 +215,8 @@ double l2StretchOf(const IndexedMesh& S, const std::vector<Vec3>& image) {
   return sumAt > 0 ? std::sqrt(l2 / sumAt) * std::sqrt(sumAs / sumAt) : 0.0;
 }
 
-/// One run of stages 1-5 with the options' bound. Internally a triangle is bad when it faces
+/// One run of stages 1-5 with the options' bound (flip counts are left to the caller: 0 here).
+/// Internally a triangle is bad when it faces
 /// against the normals of the target faces its corners were located in (`imageFlipped`): at a
 /// corner on a target edge or vertex that is stricter than the metrics' test, never looser.
 MapUntangleResult untangleOnce(const IndexedMesh& S, const IndexedMesh& T, const std::vector<char>& fixed,
@@ -388,13 +389,6 @@ MapUntangleResult untangleOnce(const IndexedMesh& S, const IndexedMesh& T, const
     return improved;
   };
 
-  r.flippedBefore = 0;
-  for (int f = 0; f < nf; ++f) {
-    const auto& t = S.faces[f];
-    r.flippedBefore += !evalFace(f, -1, Vec3::Zero(), -1).degenerate &&
-                       imageFlipped(image[t[0]], image[t[1]], image[t[2]], normal, onTarget[t[0]].face,
-                                    onTarget[t[1]].face, onTarget[t[2]].face);
-  }
   int badNow = countBad();
   // Stages 1-4 with a bound `cap` on the distortion a local move may leave behind.
   auto untangleWith = [&](const double cap) {
@@ -595,11 +589,8 @@ MapUntangleResult untangleOnce(const IndexedMesh& S, const IndexedMesh& T, const
       const Score s = score(v, walker.point(fp), fp.face);
       if (s.bad <= cur.bad && s.cost < cur.cost) apply(v, fp);
     }
-  for (int f = 0; f < nf; ++f) {
-    const FaceEval e = evalFace(f, -1, Vec3::Zero(), -1);
-    if (e.degenerate) ++r.degenerateAfter;
-    else if (e.bad) ++r.flippedAfter;
-  }
+  // Flips are counted by the caller, as the metrics count them.
+  for (int f = 0; f < nf; ++f) r.degenerateAfter += evalFace(f, -1, Vec3::Zero(), -1).degenerate;
   r.movedVertices = static_cast<int>(std::count(moved.begin(), moved.end(), 1));
   return r;
 }
@@ -626,13 +617,12 @@ MapUntangleResult untangleCrossMap(const IndexedMesh& S, const IndexedMesh& T, c
     }
     return n;
   };
-  MapUntangleResult r;
-  r.flippedBefore = flips(onTarget, image);
-  if (r.flippedBefore == 0) return r;  // nothing to untangle: the map is left as it is
+  const int before = flips(onTarget, image);
+  if (before == 0) return MapUntangleResult{};  // nothing to untangle: the map is left as it is
   const std::vector<FacePoint> startOn = onTarget;
   const std::vector<Vec3> startImage = image;
-  r = untangleOnce(S, T, fixed, onTarget, image, options);
-  r.flippedBefore = flips(startOn, startImage);
+  MapUntangleResult r = untangleOnce(S, T, fixed, onTarget, image, options);
+  r.flippedBefore = before;
   r.flippedAfter = flips(onTarget, image);
   r.attempts = 1;
   // Where flips survive, the whole run again from the start with other bounds; the map with
@@ -645,7 +635,7 @@ MapUntangleResult untangleCrossMap(const IndexedMesh& S, const IndexedMesh& T, c
     MapUntangleOptions o = options;
     o.maxDistortion = bound;
     MapUntangleResult t = untangleOnce(S, T, fixed, on, x, o);
-    t.flippedBefore = r.flippedBefore;
+    t.flippedBefore = before;
     t.flippedAfter = flips(on, x);
     t.attempts = r.attempts + 1;
     const double l2 = l2StretchOf(S, x);
