@@ -5,6 +5,7 @@
 #include <mutex>
 #include <string>
 #include <cmath>
+#include <functional>
 #include <thread>
 #include <unordered_map>
 
@@ -117,6 +118,75 @@ int splitCollinearFaces(Layout& L) {
   return splits;
 }
 
+bool meanValueMap(const RefinedMesh& mesh, const std::vector<int>& faces,
+                  const std::function<bool(int, int, Vec2&)>& fixedAt, std::vector<std::array<Vec2, 3>>& uv,
+                  int* unknowns) {
+  std::unordered_map<int, int> index;  // free vertex -> unknown
+  std::unordered_map<int, char> isFixed;
+  for (int f : faces) {
+    const auto v = mesh.faceVertices(f);
+    for (int k = 0; k < 3; ++k) {
+      if (index.count(v[k]) || isFixed.count(v[k])) continue;
+      Vec2 at;
+      if (fixedAt(f, k, at)) isFixed.emplace(v[k], 1);
+      else index.emplace(v[k], static_cast<int>(index.size()));
+    }
+  }
+  const int n = static_cast<int>(index.size());
+  if (unknowns) *unknowns = n;
+  std::vector<Vec2> solved(n);
+  if (n > 0) {
+    // Mean-value weights (Floater 2003): w_ij = (tan(a1/2) + tan(a2/2)) / |v_i - v_j|.
+    std::vector<Eigen::Triplet<double>> trip;
+    Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(n, 2);
+    std::vector<double> diag(n, 0.0);
+    for (int f : faces) {
+      const auto v = mesh.faceVertices(f);
+      for (int k = 0; k < 3; ++k) {
+        auto it = index.find(v[k]);
+        if (it == index.end()) continue;
+        const int i = it->second;
+        const Vec3 &pi = mesh.position(v[k]), &pj = mesh.position(v[(k + 1) % 3]), &pk = mesh.position(v[(k + 2) % 3]);
+        const Vec3 ej = pj - pi, ek = pk - pi;
+        const double angle = std::atan2(ej.cross(ek).norm(), ej.dot(ek));
+        const double t = std::tan(0.5 * angle);
+        for (int side = 1; side <= 2; ++side) {
+          const int w = v[(k + side) % 3];
+          const double len = (mesh.position(w) - pi).norm();
+          const double weight = t / std::max(len, 1e-300);
+          diag[i] += weight;
+          auto jt = index.find(w);
+          if (jt != index.end()) trip.emplace_back(i, jt->second, -weight);
+          else {
+            Vec2 at;
+            fixedAt(f, (k + side) % 3, at);
+            rhs(i, 0) += weight * at.x();
+            rhs(i, 1) += weight * at.y();
+          }
+        }
+      }
+    }
+    for (int i = 0; i < n; ++i) trip.emplace_back(i, i, diag[i]);
+    Eigen::SparseMatrix<double> A(n, n);
+    A.setFromTriplets(trip.begin(), trip.end());
+    Eigen::SparseLU<Eigen::SparseMatrix<double>> lu;
+    lu.compute(A);
+    if (lu.info() != Eigen::Success) return false;
+    const Eigen::MatrixXd x = lu.solve(rhs);
+    for (int i = 0; i < n; ++i) solved[i] = Vec2(x(i, 0), x(i, 1));
+  }
+  uv.assign(faces.size(), {Vec2::Zero(), Vec2::Zero(), Vec2::Zero()});
+  for (size_t i = 0; i < faces.size(); ++i) {
+    const auto v = mesh.faceVertices(faces[i]);
+    for (int k = 0; k < 3; ++k) {
+      auto it = index.find(v[k]);
+      if (it != index.end()) uv[i][k] = solved[it->second];
+      else fixedAt(faces[i], k, uv[i][k]);
+    }
+  }
+  return true;
+}
+
 PatchParameterization parameterizePatches(const Layout& L, const ParameterizationOptions& options) {
   PatchParameterization out;
   const int nf = L.mesh.faceCount();
@@ -132,69 +202,19 @@ PatchParameterization parameterizePatches(const Layout& L, const Parameterizatio
   auto work = [&] {
     for (int p; (p = next++) < static_cast<int>(L.patches.size());) {
       const Patch& patch = L.patches[p];
-      std::unordered_map<int, int> index;  // interior vertex -> unknown
-      std::unordered_map<int, Vec2> fixed;
-      for (int f : facesOf[p])
-        for (int v : L.mesh.faceVertices(f)) {
-          if (index.count(v) || fixed.count(v)) continue;
-          Vec2 uv;
-          if (boundaryUV(L, pp, patch, v, uv)) fixed.emplace(v, uv);
-          else index.emplace(v, static_cast<int>(index.size()));
-        }
-      const int n = static_cast<int>(index.size());
-      std::vector<Vec2> solved(n);
-      if (n > 0) {
-        // Mean-value weights (Floater 2003): w_ij = (tan(a1/2) + tan(a2/2)) / |v_i - v_j|.
-        std::vector<Eigen::Triplet<double>> trip;
-        Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(n, 2);
-        std::vector<double> diag(n, 0.0);
-        for (int f : facesOf[p]) {
-          const auto v = L.mesh.faceVertices(f);
-          for (int k = 0; k < 3; ++k) {
-            auto it = index.find(v[k]);
-            if (it == index.end()) continue;
-            const int i = it->second;
-            const Vec3 &pi = L.mesh.position(v[k]), &pj = L.mesh.position(v[(k + 1) % 3]), &pk = L.mesh.position(v[(k + 2) % 3]);
-            const Vec3 ej = pj - pi, ek = pk - pi;
-            const double angle = std::atan2(ej.cross(ek).norm(), ej.dot(ek));
-            const double t = std::tan(0.5 * angle);
-            for (int side = 1; side <= 2; ++side) {
-              const int w = v[(k + side) % 3];
-              const double len = (L.mesh.position(w) - pi).norm();
-              const double weight = t / std::max(len, 1e-300);
-              diag[i] += weight;
-              auto jt = index.find(w);
-              if (jt != index.end()) trip.emplace_back(i, jt->second, -weight);
-              else {
-                const Vec2& uv = fixed.at(w);
-                rhs(i, 0) += weight * uv.x();
-                rhs(i, 1) += weight * uv.y();
-              }
-            }
-          }
-        }
-        for (int i = 0; i < n; ++i) trip.emplace_back(i, i, diag[i]);
-        Eigen::SparseMatrix<double> A(n, n);
-        A.setFromTriplets(trip.begin(), trip.end());
-        Eigen::SparseLU<Eigen::SparseMatrix<double>> lu;
-        lu.compute(A);
-        if (lu.info() != Eigen::Success) {
-          std::lock_guard<std::mutex> lock(errorMutex);
-          failed = true;
-          error = "the mean-value system of patch " + std::to_string(p) + " is singular";
-          continue;
-        }
-        const Eigen::MatrixXd x = lu.solve(rhs);
-        for (int i = 0; i < n; ++i) solved[i] = Vec2(x(i, 0), x(i, 1));
-        interior += n;
+      std::vector<std::array<Vec2, 3>> uv;
+      int n = 0;
+      const bool ok = meanValueMap(
+          L.mesh, facesOf[p],
+          [&](int f, int k, Vec2& at) { return boundaryUV(L, pp, patch, L.mesh.faceVertices(f)[k], at); }, uv, &n);
+      if (!ok) {
+        std::lock_guard<std::mutex> lock(errorMutex);
+        failed = true;
+        error = "the mean-value system of patch " + std::to_string(p) + " is singular";
+        continue;
       }
-      for (int f : facesOf[p]) {
-        const auto v = L.mesh.faceVertices(f);
-        for (int k = 0; k < 3; ++k) {
-          auto it = index.find(v[k]);
-          out.cornerUV[f][k] = it != index.end() ? solved[it->second] : fixed.at(v[k]);
-        }
-      }
+      interior += n;
+      for (size_t i = 0; i < facesOf[p].size(); ++i) out.cornerUV[facesOf[p][i]] = uv[i];
     }
   };
   int threads = options.threads > 0 ? options.threads : static_cast<int>(std::thread::hardware_concurrency());

@@ -7,6 +7,7 @@
 /// domain (Tutte/Floater). One sparse LU factorization per patch, patches in parallel.
 
 #include <array>
+#include <functional>
 #include <vector>
 
 #include <Eigen/Core>
@@ -37,6 +38,16 @@ Vec2 domainCorner(int k);
 /// triangle (a path running around a single face), so that no face is mapped to a segment.
 /// Returns the number of edge splits. Keeps `layout.facePatch` and `layout.edgePath` in sync.
 int splitCollinearFaces(Layout& layout);
+
+/// Convex-combination map of a set of refined-mesh faces (a disk) into the plane with Floater's
+/// mean-value weights: the corner k of face f is fixed at `uv` where `fixedAt(f, k, uv)` is
+/// true (a vertex is free when it is at its first corner met, faces in order, and then at all);
+/// the free vertices are solved for. `uv[i]` receives the corners of `faces[i]`, `unknowns`
+/// (optional) the free vertex count. Bijective when the fixed corners run around a convex
+/// polygon (Tutte/Floater). False: a singular system.
+bool meanValueMap(const RefinedMesh& mesh, const std::vector<int>& faces,
+                  const std::function<bool(int, int, Vec2&)>& fixedAt, std::vector<std::array<Vec2, 3>>& uv,
+                  int* unknowns = nullptr);
 
 /// Map every patch of `layout` onto the domain triangle. Pre-condition: `validateLayout` holds
 /// and `splitCollinearFaces` was applied. Errors: InternalError (a singular patch system).
