@@ -415,11 +415,23 @@ MapUntangleResult untangleOnce(const IndexedMesh& S, const IndexedMesh& T, const
         }
         Score best = cur;
         FacePoint bestFp;
+        // Per triangle of v, the most distortion a move may leave on it: `cap`, or what a good
+        // triangle has already if that is more (a flipped one gets `cap`).
+        std::vector<double> bound;
+        for (int f : facesOf[v]) {
+          const FaceEval e = evalFace(f, -1, Vec3::Zero(), -1);
+          bound.push_back(e.bad ? cap : std::max(cap, e.cost));
+        }
         auto tryStep = [&](const Vec3& d) {
           const FacePoint fp = walker.walk(onTarget[v], d);
-          const Score s = score(v, walker.point(fp), fp.face);
-          // Trading a flip for a badly distorted triangle is no gain: such candidates are out.
-          if (s.worstGood > std::max(cap, cur.worstGood)) return;
+          const Vec3 x = walker.point(fp);
+          // Trading a flip for a badly distorted triangle is no gain, nor is making a distorted
+          // one (a sliver of the source, say) worse: such candidates are out.
+          for (size_t i = 0; i < facesOf[v].size(); ++i) {
+            const FaceEval e = evalFace(facesOf[v][i], v, x, fp.face);
+            if (!e.bad && e.cost > bound[i]) return;
+          }
+          const Score s = score(v, x, fp.face);
           if (s.betterThan(best)) best = s, bestFp = fp;
         };
         for (const Vec3& goal : goals)
