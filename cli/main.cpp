@@ -153,6 +153,7 @@ struct RunArgs {
   double snapTolerance = 0.01;
   int morph = 0;
   int smooth = 0;
+  int straighten = cbd::PathSmoothingOptions{}.rounds;
   bool noUntangle = false;
 };
 
@@ -166,6 +167,7 @@ cbd::CrossParameterizationOptions pipelineOptions(const RunArgs& a) {
   o.edgeNodes.minEdgeNodes = a.singleEdgeNode ? 1 : a.minEdgeNodes;
   o.edgeNodes.adaptive = !a.singleEdgeNode;
   o.smoothing.iterations = a.smooth;
+  o.straightening.rounds = a.straighten;
   o.untangle = !a.noUntangle;
   return o;
 }
@@ -213,7 +215,8 @@ json layoutJson(const cbd::LayoutPair& p) {
 
 json timesJson(const cbd::StageTimes& t) {
   return {{"voronoi", t.voronoi},         {"source_layout", t.sourceLayout},
-          {"target_layout", t.targetLayout}, {"parameterization", t.parameterization},
+          {"target_layout", t.targetLayout}, {"straighten", t.straighten},
+          {"parameterization", t.parameterization},
           {"untangle", t.untangle},       {"distortion", t.distortion},   {"total", t.total}};
 }
 
@@ -336,6 +339,14 @@ int runMap(const RunArgs& a) {
   j["timing_s"] = timesJson(r.times);
   if (!r.status) return finish(r.status, j, a.jsonPath);
   j["layout"] = layoutJson(r.layouts);
+  if (a.straighten > 0) {
+    auto side = [](const cbd::PathSmoothingResult& s) {
+      return json{{"straightened", s.straightened}, {"skipped", s.skipped}, {"splits", s.splits},
+                  {"length_before", s.lengthBefore}, {"length_after", s.lengthAfter}};
+    };
+    j["straighten"] = {{"rounds", a.straighten}, {"source", side(r.straightenSource)},
+                       {"target", side(r.straightenTarget)}, {"failed", r.straightenFailed}};
+  }
   const auto& m = r.metrics;
   if (a.smooth > 0)
     j["smoothing"] = {{"iterations", a.smooth}, {"moves", r.smoothing.moves}, {"rejected", r.smoothing.rejected},
@@ -375,16 +386,24 @@ int runMap(const RunArgs& a) {
   if (a.morph > 0)
     if (cbd::Status s = cbd::writeMorph(dir, in.sourceMesh, r.map.sourceImage, sa, a.morph); !s) return finish(s, j, a.jsonPath);
   printLayout(r.layouts);
+  if (a.straighten > 0) {
+    const auto &s = r.straightenSource, &t = r.straightenTarget;
+    std::printf("straighten %d round%s: %d / %d paths straightened (source / target), total length %.4g -> %.4g / "
+                "%.4g -> %.4g%s\n",
+                a.straighten, a.straighten == 1 ? "" : "s", s.straightened, t.straightened, s.lengthBefore,
+                s.lengthAfter, t.lengthBefore, t.lengthAfter,
+                r.straightenFailed ? " (a layout failed its checks and was kept as traced)" : "");
+  }
   std::printf("map     E_ang %.4f (%.2f deg), E_L2 %.4f (inverse %.4f), %d flipped, %d degenerate triangles\n", m.eAng,
               m.eAngDegrees, m.eL2, m.eL2Inverse, m.flipped, m.degenerate);
   if (!a.noUntangle)
     std::printf("untangle flipped triangles of M_st %d -> %d (%d vertices moved), of M_ts %d -> %d\n",
                 r.untangleSource.flippedBefore, r.untangleSource.flippedAfter, r.untangleSource.movedVertices,
                 r.untangleTarget.flippedBefore, r.untangleTarget.flippedAfter);
-  std::printf("time    voronoi %.3f s, source layout %.3f s, target layout %.3f s, parameterization %.3f s, "
-              "untangle %.3f s, total %.3f s\n",
-              r.times.voronoi, r.times.sourceLayout, r.times.targetLayout, r.times.parameterization, r.times.untangle,
-              r.times.total);
+  std::printf("time    voronoi %.3f s, source layout %.3f s, target layout %.3f s, straighten %.3f s, "
+              "parameterization %.3f s, untangle %.3f s, total %.3f s\n",
+              r.times.voronoi, r.times.sourceLayout, r.times.targetLayout, r.times.straighten, r.times.parameterization,
+              r.times.untangle, r.times.total);
   std::printf("wrote   %s/mst.ply (source connectivity on the target; face quality = stretch), %s/mts.ply,\n"
               "        %s/correspondence.txt, %s/{source,target}/ layouts%s\n",
               dir.c_str(), dir.c_str(), dir.c_str(), dir.c_str(), a.morph > 0 ? ", morph_*.ply" : "");
@@ -481,6 +500,12 @@ int main(int argc, char** argv) {
                      "(mts.ply, the inverse map, is not smoothed)")
       ->capture_default_str()
       ->check(CLI::Range(0, 1000));
+  cmdMap->add_option("--straighten", map.straighten,
+                     "N rounds straightening every path of both layouts inside its two patches (the diagonal of "
+                     "their quadrilateral mapped onto a square; the same for either method), before the patches "
+                     "are parameterized; 0: the paths as traced")
+      ->capture_default_str()
+      ->check(CLI::Range(0, 100));
   cmdMap->add_flag("--no-untangle", map.noUntangle,
                    "keep the composed map as it is: do not move the images of the vertices of flipped M_st / M_ts "
                    "triangles over the target (the default removes most flips, then polishes the map; see README)");

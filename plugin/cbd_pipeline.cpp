@@ -62,6 +62,7 @@ cbd::CrossParameterizationOptions coreOptions(const PipelineOptions& o, bool wit
   c.edgeNodes.minEdgeNodes = o.minEdgeNodes;
   c.edgeNodes.adaptive = o.adaptiveEdgeNodes;
   if (withSmoothing) c.smoothing.iterations = o.smoothingIterations;
+  c.straightening.rounds = withSmoothing ? o.straightenRounds : 0;
   return c;
 }
 
@@ -206,7 +207,7 @@ std::string timesLine(const cbd::StageTimes& t, bool withMap) {
   std::string s = "timings: voronoi " + seconds(t.voronoi) + ", source layout " + seconds(t.sourceLayout) +
                   ", target layout " + seconds(t.targetLayout);
   if (withMap)
-    s += ", parameterization " + seconds(t.parameterization) + ", untangle " + seconds(t.untangle) + ", distortion " +
+    s += ", straighten " + seconds(t.straighten) + ", parameterization " + seconds(t.parameterization) + ", untangle " + seconds(t.untangle) + ", distortion " +
          seconds(t.distortion);
   return s + ", total " + seconds(t.total);
 }
@@ -329,6 +330,13 @@ cbd::Status runPipeline(const PipelineRequest& rq, vcg::CallBackPos* cb) {
 
   log(anchorList(rq.report));
   log(layoutLine(r.layouts));
+  if (o.straightenRounds > 0)
+    log("straighten: " + std::to_string(o.straightenRounds) + " round(s), " +
+        std::to_string(r.straightenSource.straightened) + " / " + std::to_string(r.straightenTarget.straightened) +
+        " paths straightened (source / target), total length " + fixed(r.straightenSource.lengthBefore, 4) + " -> " +
+        fixed(r.straightenSource.lengthAfter, 4) + " / " + fixed(r.straightenTarget.lengthBefore, 4) + " -> " +
+        fixed(r.straightenTarget.lengthAfter, 4) +
+        (r.straightenFailed ? " (a layout failed its checks and was kept as traced)" : ""));
   if (o.smoothingIterations > 0)
     log("smoothing: " + std::to_string(o.smoothingIterations) + " iterations, " + std::to_string(r.smoothing.moves) +
         " moves, " + std::to_string(r.smoothing.rejected) + " rejected, flipped " +

@@ -35,6 +35,7 @@ const char* const kMethod = "Method";
 const char* const kMinEdgeNodes = "MinEdgeNodes";
 const char* const kAdaptiveEdgeNodes = "AdaptiveEdgeNodes";
 const char* const kSmoothingIterations = "SmoothingIterations";
+const char* const kStraightenRounds = "StraightenRounds";
 const char* const kColourByCluster = "ColourByCluster";
 const char* const kAddMstLayer = "AddMstLayer";
 const char* const kColourByPatch = "ColourByPatch";
@@ -349,6 +350,10 @@ void FilterCbdPlugin::initParameterSet(QAction* action, MeshDocument& md, RichPa
                           "(corresponding clusters get the same colour) instead of by patch. "
                           "Voronoi method only."));
   if (id == FP_CROSS_PARAMETERIZE) {
+    par.addParam(RichInt(kStraightenRounds, cbd::PathSmoothingOptions{}.rounds, "Straighten paths (rounds)",
+                         "Rounds straightening every path of both base domains inside its two patches "
+                         "(the diagonal of their quadrilateral mapped onto a square), before the patches "
+                         "are parameterized; the same for either method (0: the paths as traced)."));
     par.addParam(RichInt(kSmoothingIterations, 0, "Smoothing iterations",
                          "Smoothing passes over the cross-parameterization (0: none)."));
     par.addParam(RichBool(kAddMstLayer, true, "Add M_st layer",
@@ -415,6 +420,10 @@ bool FilterCbdPlugin::apply(int filter, MeshDocument& md, const RichParameterLis
     throwError(cbd::ErrorCode::InvalidArgument, "'Minimum edge nodes' must be >= 0, got " + std::to_string(options.minEdgeNodes));
   options.adaptiveEdgeNodes = boolParam(par, kAdaptiveEdgeNodes);
   if (filter == FP_CROSS_PARAMETERIZE) {
+    options.straightenRounds = intParam(par, kStraightenRounds);
+    if (options.straightenRounds < 0 || options.straightenRounds > 100)
+      throwError(cbd::ErrorCode::InvalidArgument,
+                 "'Straighten paths (rounds)' must be in 0..100, got " + std::to_string(options.straightenRounds));
     options.smoothingIterations = intParam(par, kSmoothingIterations);
     if (options.smoothingIterations < 0)
       throwError(cbd::ErrorCode::InvalidArgument,

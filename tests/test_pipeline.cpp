@@ -78,7 +78,9 @@ TEST(Pipeline, CowToBullTakesTheBullsDiagramWhenTheCowsTwists) {
   EXPECT_TRUE(p.reversed);
   EXPECT_NEAR(p.reverseDetour, forward.detour, 1e-12);
   EXPECT_LT(p.detour, 1.5);
-  EXPECT_NEAR(p.detour, lengthDetour(p.source, p.target), 1e-12);
+  // The detour is the traced layouts'; straightening (on by default) keeps it low.
+  EXPECT_GT(r.straightenSource.straightened, 0);
+  EXPECT_LT(lengthDetour(p.source, p.target), 1.5);
   // The layouts kept are on the right surfaces, valid and isomorphic.
   EXPECT_EQ(p.source.mesh.inputVertexCount(), in.source.vertexCount());
   EXPECT_EQ(p.target.mesh.inputVertexCount(), in.target.vertexCount());

@@ -123,6 +123,21 @@ CrossParameterizationResult crossParameterize(const IndexedMesh& source, const s
   r.times = r.layouts.times;
   if (!r.layouts.status) return r.status = r.layouts.status, r;
   auto t1 = std::chrono::steady_clock::now();
+  if (options.straightening.rounds > 0) {
+    // Each surface on its own; a result that fails its checks is dropped for the traced layout.
+    auto straighten = [&](Layout& L, PathSmoothingResult& out) {
+      Layout copy = L;
+      out = straightenPaths(copy, options.straightening);
+      if (out.status && validateLayout(copy, euler).status) L = std::move(copy);
+      else r.straightenFailed = true;
+    };
+    straighten(r.layouts.source, r.straightenSource);
+    straighten(r.layouts.target, r.straightenTarget);
+    if (!checkIsomorphic(r.layouts.source, r.layouts.target))
+      return r.status = Status::error(ErrorCode::InternalError, "the straightened layouts are not isomorphic"), r;
+    r.times.straighten = seconds(t1);
+    t1 = std::chrono::steady_clock::now();
+  }
   for (Layout* L : {&r.layouts.source, &r.layouts.target}) splitCollinearFaces(*L);
   r.sourceParam = parameterizePatches(r.layouts.source, options.parameterization);
   if (!r.sourceParam.status) return r.status = r.sourceParam.status, r;

@@ -109,6 +109,7 @@ write_mlx() {  # file filter source_anchors target_anchors [smoothing]
     echo '  <Param type="RichInt" value="3" name="MinEdgeNodes"/>'
     echo '  <Param type="RichBool" value="true" name="AdaptiveEdgeNodes"/>'
     if [ -n "$smooth" ]; then
+      echo '  <Param type="RichInt" value="2" name="StraightenRounds"/>'
       echo "  <Param type=\"RichInt\" value=\"$smooth\" name=\"SmoothingIterations\"/>"
       echo '  <Param type="RichBool" value="true" name="AddMstLayer"/>'
       echo '  <Param type="RichBool" value="true" name="ColourByPatch"/>'

@@ -12,6 +12,7 @@
 #include "cbd/map_smoothing.h"
 #include "cbd/map_untangle.h"
 #include "cbd/parameterization.h"
+#include "cbd/path_smoothing.h"
 #include "cbd/source_layout.h"
 #include "cbd/target_layout.h"
 
@@ -34,6 +35,9 @@ struct CrossParameterizationOptions {
   /// fails, the layout is also built the other way round — from the target's Voronoi diagram,
   /// traced on the source — and the one with the smaller detour is kept. 0: never.
   double reverseDetour = 2.0;
+  /// Both layouts' paths straightened inside their two patches (path_smoothing.h), for either
+  /// method alike; 0 rounds: the paths as traced.
+  PathSmoothingOptions straightening;
   MapSmoothingOptions smoothing;        ///< 0 iterations: the composed map as it is
   bool untangle = true;                 ///< remove flipped triangles from M_st and M_ts (map_untangle.h)
   MapUntangleOptions untangling;
@@ -44,6 +48,7 @@ struct StageTimes {
   double voronoi = 0.0;          ///< Voronoi clusters on both surfaces (0 for greedy)
   double sourceLayout = 0.0;     ///< greedy: all-pairs paths + trial and error (both surfaces)
   double targetLayout = 0.0;
+  double straighten = 0.0;       ///< path straightening on both surfaces
   double parameterization = 0.0; ///< both surfaces' patch maps + composition (+ smoothing)
   double untangle = 0.0;         ///< removing flipped triangles from M_st and M_ts
   double distortion = 0.0;
@@ -59,7 +64,7 @@ struct LayoutPair {
   TargetLayoutResult targetStats;
   GreedyLayoutResult greedyStats;   ///< greedy: counters (its layouts moved out)
   StageTimes times;                 ///< both directions when the reverse was tried
-  double detour = 1.0;              ///< lengthDetour(source, target) of the layouts kept
+  double detour = 1.0;              ///< lengthDetour(source, target) of the layouts kept, as traced
   bool triedReverse = false;        ///< Voronoi: the layout was also built from the target's diagram
   bool reversed = false;            ///< ... and that one was kept (its statistics are in sourceStats /
                                     ///< targetStats with the roles of the surfaces swapped)
@@ -84,7 +89,11 @@ LayoutPair buildLayouts(const IndexedMesh& source, const std::vector<int>& sourc
 /// Everything `crossParameterize` computed.
 struct CrossParameterizationResult {
   Status status;
-  LayoutPair layouts;                 ///< collinear faces split for parameterization
+  LayoutPair layouts;                 ///< straightened, collinear faces split for parameterization
+  /// Path straightening of each layout. A layout whose straightening failed (status not ok) or
+  /// did not validate is kept as traced, and `straightenFailed` says so.
+  PathSmoothingResult straightenSource, straightenTarget;
+  bool straightenFailed = false;
   PatchParameterization sourceParam, targetParam;
   CrossMap map;
   MapSmoothingResult smoothing;
