@@ -29,16 +29,21 @@ using namespace cbd;
 namespace {
 
 struct Method {
-  std::string name;  // greedy | voronoi-E1 | voronoi-C
+  std::string name;  // greedy | voronoi-E1 | voronoi-C, and "-traced" for the paths as traced
   CrossParameterizationOptions options;
 };
 
+/// The three methods with cbd's defaults (paths straightened, path_smoothing.h), then the
+/// greedy baseline and Voronoi C with their paths as traced: the paper's protocol, where
+/// nothing but the map is post-processed.
 std::vector<Method> methods() {
   Method g{"greedy", {}}, e1{"voronoi-E1", {}}, c{"voronoi-C", {}};
   g.options.method = LayoutMethod::Greedy;
   e1.options.edgeNodes.minEdgeNodes = 1;
   e1.options.edgeNodes.adaptive = false;
-  return {g, e1, c};
+  Method gt{"greedy-traced", g.options}, ct{"voronoi-C-traced", c.options};
+  gt.options.straightening.rounds = ct.options.straightening.rounds = 0;
+  return {g, e1, c, gt, ct};
 }
 
 /// One run's numbers, as the child reports them.
@@ -48,7 +53,8 @@ struct Run {
   double eAng = 0, eAngDeg = 0, eL2 = 0, eL2Inv = 0;
   int flipped = 0, degenerate = 0, edges = 0, multi = 0;
   int flippedRaw = 0;  // before untangling (the composed map as it is)
-  double tVoronoi = 0, tSource = 0, tTarget = 0, tParam = 0, tLayout = 0, tTotal = 0;
+  double eAngRaw = 0, eL2Raw = 0;  // the same
+  double tVoronoi = 0, tSource = 0, tTarget = 0, tParam = 0, tLayout = 0, tTotal = 0, tStraighten = 0;
   double peakMB = 0;
 };
 
@@ -70,7 +76,8 @@ Run forked(const std::function<Run()>& fn) {
     o.precision(17);
     o << r.ok << ' ' << r.eAng << ' ' << r.eAngDeg << ' ' << r.eL2 << ' ' << r.eL2Inv << ' ' << r.flipped << ' '
       << r.degenerate << ' ' << r.edges << ' ' << r.multi << ' ' << r.tVoronoi << ' ' << r.tSource << ' ' << r.tTarget
-      << ' ' << r.tParam << ' ' << r.tLayout << ' ' << r.tTotal << ' ' << r.flippedRaw << ' ' << r.error << '\n';
+      << ' ' << r.tParam << ' ' << r.tLayout << ' ' << r.tTotal << ' ' << r.flippedRaw << ' ' << r.eAngRaw << ' '
+      << r.eL2Raw << ' ' << r.tStraighten << ' ' << r.error << '\n';
     const std::string s = o.str();
     (void)!write(fd[1], s.data(), s.size());
     _exit(0);
@@ -87,7 +94,8 @@ Run forked(const std::function<Run()>& fn) {
   Run r;
   std::istringstream in(out);
   if (!(in >> r.ok >> r.eAng >> r.eAngDeg >> r.eL2 >> r.eL2Inv >> r.flipped >> r.degenerate >> r.edges >> r.multi >>
-        r.tVoronoi >> r.tSource >> r.tTarget >> r.tParam >> r.tLayout >> r.tTotal >> r.flippedRaw)) {
+        r.tVoronoi >> r.tSource >> r.tTarget >> r.tParam >> r.tLayout >> r.tTotal >> r.flippedRaw >> r.eAngRaw >>
+        r.eL2Raw >> r.tStraighten)) {
     r.ok = false;
     r.error = "the run crashed (status " + std::to_string(status) + ")";
   } else {
@@ -116,6 +124,8 @@ Run runPipeline(const IndexedMesh& s, const std::vector<int>& sa, const IndexedM
     r.eAng = c.metrics.eAng, r.eAngDeg = c.metrics.eAngDegrees, r.eL2 = c.metrics.eL2, r.eL2Inv = c.metrics.eL2Inverse;
     r.flipped = c.metrics.flipped, r.degenerate = c.metrics.degenerate;
     r.flippedRaw = o.untangle ? c.untangleSource.flippedBefore : c.metrics.flipped;
+    r.eAngRaw = c.composedMetrics.eAng, r.eL2Raw = c.composedMetrics.eL2;
+    r.tStraighten = c.times.straighten;
     r.edges = static_cast<int>(c.layouts.source.edges.size());
     r.multi = c.layouts.source.multipleLinkages();
     r.tVoronoi = c.times.voronoi, r.tSource = c.times.sourceLayout, r.tTarget = c.times.targetLayout;
@@ -149,7 +159,7 @@ int table(const fs::path& root, const std::string& manifest, const fs::path& out
   std::ofstream csv(out / "table.csv"), md(out / "table.md");
   csv << "pair,source_vertices,target_vertices,anchors,method,status,e_ang,e_ang_deg,e_l2,e_l2_inverse,flipped,"
          "degenerate,edges,multi_linkages,t_voronoi,t_source_layout,t_target_layout,t_layout,t_parameterization,"
-         "t_total,peak_mb,flipped_before_untangle,error\n";
+         "t_total,peak_mb,flipped_before_untangle,e_ang_composed,e_l2_composed,t_straighten,error\n";
   md << "| pair | V src / tgt | anchors | method | E_ang | E_L2 | flipped | layout s | total s | peak MB | note |\n"
         "|---|---|---|---|---|---|---|---|---|---|---|\n";
   std::string line;
@@ -193,10 +203,12 @@ int table(const fs::path& root, const std::string& manifest, const fs::path& out
           << m.name << ',' << (r.ok ? "ok" : "failed") << ',' << r.eAng << ',' << r.eAngDeg << ',' << r.eL2 << ','
           << r.eL2Inv << ',' << r.flipped << ',' << r.degenerate << ',' << r.edges << ',' << r.multi << ','
           << r.tVoronoi << ',' << r.tSource << ',' << r.tTarget << ',' << r.tLayout << ',' << r.tParam << ','
-          << r.tTotal << ',' << r.peakMB << ',' << r.flippedRaw << ",\"" << r.error << "\"\n";
-      std::printf("%-24s %-11s %s E_ang %.3f E_L2 %.3f flipped %d (before untangling %d) layout %.3fs total %.3fs peak %.0f MB %s\n",
-                  p.name.c_str(), m.name.c_str(), r.ok ? "ok    " : "FAILED", r.eAng, r.eL2, r.flipped, r.flippedRaw, r.tLayout,
-                  r.tTotal, r.peakMB, r.ok ? "" : r.error.c_str());
+          << r.tTotal << ',' << r.peakMB << ',' << r.flippedRaw << ',' << r.eAngRaw << ',' << r.eL2Raw << ','
+          << r.tStraighten << ",\"" << r.error << "\"\n";
+      std::printf("%-22s %-16s %s E_ang %.3f E_L2 %.3f flipped %d (composed: %.3f %.3f %d) layout %.3fs total %.3fs "
+                  "peak %.0f MB %s\n",
+                  p.name.c_str(), m.name.c_str(), r.ok ? "ok    " : "FAILED", r.eAng, r.eL2, r.flipped, r.eAngRaw, r.eL2Raw,
+                  r.flippedRaw, r.tLayout, r.tTotal, r.peakMB, r.ok ? "" : r.error.c_str());
       std::fflush(stdout);
     }
     const Run &g = runs["greedy"], &c = runs["voronoi-C"];
@@ -272,7 +284,7 @@ int scaling(const std::string& meshPath, const fs::path& out, int maxLevel, cons
     const std::vector<int> a = farthestPointSampling(m, n);
     const Run d = sweep(m, a);
     for (const Method& meth : methods()) {
-      if (meth.name == "voronoi-E1") continue;
+      if (meth.name != "greedy" && meth.name != "voronoi-C") continue;  // layouts only: no straightening
       // The target is the mesh turned a quarter about z (exactly: coordinates swapped): the same
       // surface, but not the same input, so the Voronoi method traces its target layout rather
       // than taking the source's (pipeline.h, LayoutPair::sameSurface).

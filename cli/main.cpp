@@ -360,6 +360,11 @@ int runMap(const RunArgs& a) {
   }
   j["metrics"] = {{"e_ang", m.eAng},     {"e_ang_deg", m.eAngDegrees}, {"e_l2", m.eL2},
                   {"e_l2_inverse", m.eL2Inverse}, {"flipped", m.flipped}, {"degenerate", m.degenerate}};
+  {
+    const auto& c = r.composedMetrics;
+    j["metrics"]["composed"] = {{"e_ang", c.eAng},         {"e_ang_deg", c.eAngDegrees}, {"e_l2", c.eL2},
+                                {"e_l2_inverse", c.eL2Inverse}, {"flipped", c.flipped},      {"degenerate", c.degenerate}};
+  }
   // M_st with the target's attributes, M_ts with the source's.
   const cbd::DistortionMetrics inverse =
       cbd::computeDistortion(in.target, r.map.targetImage, in.source, r.map.targetToSource);
@@ -396,6 +401,9 @@ int runMap(const RunArgs& a) {
   }
   std::printf("map     E_ang %.4f (%.2f deg), E_L2 %.4f (inverse %.4f), %d flipped, %d degenerate triangles\n", m.eAng,
               m.eAngDegrees, m.eL2, m.eL2Inverse, m.flipped, m.degenerate);
+  if (!a.noUntangle)
+    std::printf("composed E_ang %.4f, E_L2 %.4f, %d flipped (the map before untangling)\n", r.composedMetrics.eAng,
+                r.composedMetrics.eL2, r.composedMetrics.flipped);
   if (!a.noUntangle)
     std::printf("untangle flipped triangles of M_st %d -> %d (%d vertices moved), of M_ts %d -> %d\n",
                 r.untangleSource.flippedBefore, r.untangleSource.flippedAfter, r.untangleSource.movedVertices,

@@ -153,6 +153,8 @@ CrossParameterizationResult crossParameterize(const IndexedMesh& source, const s
   r.times.parameterization = seconds(t1);
   t1 = std::chrono::steady_clock::now();
   if (options.untangle) {
+    r.composedMetrics = computeDistortion(source, r.map.sourceImage, target, r.map.sourceToTarget);
+    if (!r.composedMetrics.status) return r.status = r.composedMetrics.status, r;
     std::vector<char> fixedS(source.vertexCount(), 0), fixedT(target.vertexCount(), 0);
     for (int v : sa) fixedS[v] = 1;
     for (int v : ta) fixedT[v] = 1;
@@ -169,6 +171,7 @@ CrossParameterizationResult crossParameterize(const IndexedMesh& source, const s
   r.metrics = computeDistortion(source, r.map.sourceImage, target, r.map.sourceToTarget);
   r.times.distortion = seconds(t1);
   if (!r.metrics.status) return r.status = r.metrics.status, r;
+  if (!options.untangle) r.composedMetrics = r.metrics;
   r.times.total = seconds(t0);
   return r;
 }

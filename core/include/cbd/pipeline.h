@@ -100,6 +100,9 @@ struct CrossParameterizationResult {
   MapUntangleResult untangleSource;   ///< M_st (source vertices on the target)
   MapUntangleResult untangleTarget;   ///< M_ts (target vertices on the source)
   DistortionMetrics metrics;          ///< of M_st against the source
+  /// The same of M_st as composed, before untangling: what the base domains and their patch
+  /// maps give by themselves (equal to `metrics` when untangling is off).
+  DistortionMetrics composedMetrics;
   StageTimes times;
 };
 
