@@ -346,6 +346,8 @@ int runMap(const RunArgs& a) {
     };
     j["straighten"] = {{"rounds", a.straighten}, {"source", side(r.straightenSource)},
                        {"target", side(r.straightenTarget)}, {"failed", r.straightenFailed}};
+    for (const auto* s : {&r.straightenSource, &r.straightenTarget})
+      if (!s->status) j["straighten"]["error"] = s->status.message;
   }
   const auto& m = r.metrics;
   if (a.smooth > 0)
@@ -393,11 +395,14 @@ int runMap(const RunArgs& a) {
   printLayout(r.layouts);
   if (a.straighten > 0) {
     const auto &s = r.straightenSource, &t = r.straightenTarget;
-    std::printf("straighten %d round%s: %d / %d paths straightened (source / target), total length %.4g -> %.4g / "
-                "%.4g -> %.4g%s\n",
-                a.straighten, a.straighten == 1 ? "" : "s", s.straightened, t.straightened, s.lengthBefore,
-                s.lengthAfter, t.lengthBefore, t.lengthAfter,
-                r.straightenFailed ? " (a layout failed its checks and was kept as traced)" : "");
+    if (r.straightenFailed)
+      std::printf("straighten failed (%s): both layouts kept as traced\n",
+                  (!s.status ? s.status : t.status).message.c_str());
+    else
+      std::printf("straighten %d round%s: %d / %d paths straightened (source / target), total length %.4g -> %.4g / "
+                  "%.4g -> %.4g\n",
+                  a.straighten, a.straighten == 1 ? "" : "s", s.straightened, t.straightened, s.lengthBefore,
+                  s.lengthAfter, t.lengthBefore, t.lengthAfter);
   }
   std::printf("map     E_ang %.4f (%.2f deg), E_L2 %.4f (inverse %.4f), %d flipped, %d degenerate triangles\n", m.eAng,
               m.eAngDegrees, m.eL2, m.eL2Inverse, m.flipped, m.degenerate);

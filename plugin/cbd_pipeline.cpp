@@ -56,13 +56,14 @@ QString stem(const MeshModel& m) {
   return s.replace('.', '_');
 }
 
-cbd::CrossParameterizationOptions coreOptions(const PipelineOptions& o, bool withSmoothing) {
+/// `forMap`: the Cross-parameterize filter (smoothing and straightening apply); else the layout filter.
+cbd::CrossParameterizationOptions coreOptions(const PipelineOptions& o, bool forMap) {
   cbd::CrossParameterizationOptions c;
   c.method = o.method == LayoutMethod::GreedyShortestPaths ? cbd::LayoutMethod::Greedy : cbd::LayoutMethod::Voronoi;
   c.edgeNodes.minEdgeNodes = o.minEdgeNodes;
   c.edgeNodes.adaptive = o.adaptiveEdgeNodes;
-  if (withSmoothing) c.smoothing.iterations = o.smoothingIterations;
-  c.straightening.rounds = withSmoothing ? o.straightenRounds : 0;
+  if (forMap) c.smoothing.iterations = o.smoothingIterations;
+  c.straightening.rounds = forMap ? o.straightenRounds : 0;
   return c;
 }
 
@@ -330,13 +331,16 @@ cbd::Status runPipeline(const PipelineRequest& rq, vcg::CallBackPos* cb) {
 
   log(anchorList(rq.report));
   log(layoutLine(r.layouts));
-  if (o.straightenRounds > 0)
+  if (o.straightenRounds > 0 && r.straightenFailed)
+    log("straighten: failed (" +
+        (!r.straightenSource.status ? r.straightenSource.status : r.straightenTarget.status).message +
+        "); both base domains kept as traced");
+  else if (o.straightenRounds > 0)
     log("straighten: " + std::to_string(o.straightenRounds) + " round(s), " +
         std::to_string(r.straightenSource.straightened) + " / " + std::to_string(r.straightenTarget.straightened) +
         " paths straightened (source / target), total length " + fixed(r.straightenSource.lengthBefore, 4) + " -> " +
         fixed(r.straightenSource.lengthAfter, 4) + " / " + fixed(r.straightenTarget.lengthBefore, 4) + " -> " +
-        fixed(r.straightenTarget.lengthAfter, 4) +
-        (r.straightenFailed ? " (a layout failed its checks and was kept as traced)" : ""));
+        fixed(r.straightenTarget.lengthAfter, 4));
   if (o.smoothingIterations > 0)
     log("smoothing: " + std::to_string(o.smoothingIterations) + " iterations, " + std::to_string(r.smoothing.moves) +
         " moves, " + std::to_string(r.smoothing.rejected) + " rejected, flipped " +

@@ -79,7 +79,9 @@ TEST(Pipeline, CowToBullTakesTheBullsDiagramWhenTheCowsTwists) {
   EXPECT_NEAR(p.reverseDetour, forward.detour, 1e-12);
   EXPECT_LT(p.detour, 1.5);
   // The detour is the traced layouts'; straightening (on by default) keeps it low.
+  EXPECT_FALSE(r.straightenFailed);
   EXPECT_GT(r.straightenSource.straightened, 0);
+  EXPECT_GT(r.straightenTarget.straightened, 0);
   EXPECT_LT(lengthDetour(p.source, p.target), 1.5);
   // The layouts kept are on the right surfaces, valid and isomorphic.
   EXPECT_EQ(p.source.mesh.inputVertexCount(), in.source.vertexCount());

@@ -474,6 +474,34 @@ LayoutCheck validateLayout(const Layout& layout, int expectedEuler) {
   }
   for (int p = 0; p < E; ++p)
     if (fwd[p] != 1 || bwd[p] != 1) return fail("edge " + std::to_string(p) + " is not on exactly two patch sides");
+  // Face labels: every region's faces carry one patch, a different one per region, whose corners
+  // and sides are the region's boundary loop (up to where it starts) and whose face count is the
+  // region's.
+  if (static_cast<int>(layout.facePatch.size()) != m.faceCount()) return fail("facePatch size");
+  std::vector<int> patchOfRegion(rm.regions.size(), -1), regionOfPatch(F, -1);
+  for (int f = 0; f < m.faceCount(); ++f) {
+    const int r = rm.faceRegion[f], p = layout.facePatch[f];
+    if (p < 0 || p >= F) return fail("face " + std::to_string(f) + " has no patch");
+    if (patchOfRegion[r] < 0) {
+      if (regionOfPatch[p] >= 0) return fail("patch " + std::to_string(p) + " spans two regions");
+      patchOfRegion[r] = p, regionOfPatch[p] = r;
+    } else if (patchOfRegion[r] != p) {
+      return fail("region " + std::to_string(r) + " holds faces of patches " + std::to_string(patchOfRegion[r]) +
+                  " and " + std::to_string(p));
+    }
+  }
+  for (size_t i = 0; i < rm.regions.size(); ++i) {
+    const Patch& P = layout.patches[patchOfRegion[i]];
+    const RegionLoop& loop = rm.regions[i].loops[0];
+    bool same = false;
+    for (int shift = 0; shift < 3 && !same; ++shift) {
+      same = true;
+      for (int k = 0; k < 3; ++k)
+        same = same && P.corners[(k + shift) % 3] == loop.corners[k] && P.edges[(k + shift) % 3] == loop.sides[k];
+    }
+    if (!same) return fail("patch " + std::to_string(patchOfRegion[i]) + " does not match the region its faces form");
+    if (P.faces != rm.regions[i].faces) return fail("patch " + std::to_string(patchOfRegion[i]) + " miscounts its faces");
+  }
   // Rotation system: at each patch corner, the incoming and outgoing sides are consecutive
   // (outgoing, then incoming, counter-clockwise) in the anchor's rotation.
   if (static_cast<int>(layout.rotation.size()) != V) return fail("rotation system size");

@@ -170,7 +170,6 @@ class SurfaceWalker {
 struct Score {
   int bad = 0;
   double cost = 0.0;
-  double worstGood = 0.0;  ///< the largest cost of a good triangle
   bool betterThan(const Score& o) const { return bad < o.bad || (bad == o.bad && cost < o.cost * (1.0 - 1e-9)); }
 };
 
@@ -293,7 +292,6 @@ MapUntangleResult untangleOnce(const IndexedMesh& S, const IndexedMesh& T, const
       const FaceEval e = evalFace(f, v, x, g);
       s.bad += e.bad;
       s.cost += e.cost;
-      if (!e.bad) s.worstGood = std::max(s.worstGood, e.cost);
     }
     return s;
   };

@@ -127,7 +127,7 @@ bool meanValueMap(const RefinedMesh& mesh, const std::vector<int>& faces,
     const auto v = mesh.faceVertices(f);
     for (int k = 0; k < 3; ++k) {
       if (index.count(v[k]) || isFixed.count(v[k])) continue;
-      Vec2 at;
+      Vec2 at = Vec2::Zero();
       if (fixedAt(f, k, at)) isFixed.emplace(v[k], 1);
       else index.emplace(v[k], static_cast<int>(index.size()));
     }
@@ -158,8 +158,8 @@ bool meanValueMap(const RefinedMesh& mesh, const std::vector<int>& faces,
           auto jt = index.find(w);
           if (jt != index.end()) trip.emplace_back(i, jt->second, -weight);
           else {
-            Vec2 at;
-            fixedAt(f, (k + side) % 3, at);
+            Vec2 at = Vec2::Zero();
+            if (!fixedAt(f, (k + side) % 3, at)) return false;  // fixed at one corner, free at another
             rhs(i, 0) += weight * at.x();
             rhs(i, 1) += weight * at.y();
           }
@@ -181,7 +181,7 @@ bool meanValueMap(const RefinedMesh& mesh, const std::vector<int>& faces,
     for (int k = 0; k < 3; ++k) {
       auto it = index.find(v[k]);
       if (it != index.end()) uv[i][k] = solved[it->second];
-      else fixedAt(faces[i], k, uv[i][k]);
+      else if (!fixedAt(faces[i], k, uv[i][k])) return false;
     }
   }
   return true;

@@ -89,6 +89,7 @@ bool straightenOne(Layout& L, int e, PathSmoothingResult& r, std::string& error)
   if (!meanValueMap(m, faces, fixedAt, uv)) return false;
   std::unordered_map<int, int> slot;  // face -> index in `faces`
   for (size_t i = 0; i < faces.size(); ++i) slot.emplace(faces[i], static_cast<int>(i));
+  auto inQuad = [&](int f) { return L.facePatch[f] == p1 || L.facePatch[f] == p2; };
   auto uvOf = [&](int h) {  // square position of from(h) in face(h)
     const int f = m.face(h);
     const auto v = m.faceVertices(f);
@@ -115,6 +116,7 @@ bool straightenOne(Layout& L, int e, PathSmoothingResult& r, std::string& error)
   // Walk the segment from a to b over the faces of the union.
   constexpr double kSnap = 0.01;
   std::vector<Event> events;
+  std::vector<char> crossed(m.edgeCount(), 0);  // a straight segment crosses an edge once
   int cur = va;  // at a vertex (cur >= 0) or entering face(entry) across its edge
   int entry = -1;
   Vec2 origin = A;
@@ -180,7 +182,8 @@ bool straightenOne(Layout& L, int e, PathSmoothingResult& r, std::string& error)
     if (exitT < 1e-6 || exitT > 1 - 1e-6) return false;  // through a vertex it may not use
     if (L.edgePath[RefinedMesh::edgeOf(exitH)] >= 0 && L.edgePath[RefinedMesh::edgeOf(exitH)] != e) return false;
     const int next = RefinedMesh::twin(exitH);
-    if (!slot.count(m.face(next))) return false;
+    if (!slot.count(m.face(next)) || crossed[RefinedMesh::edgeOf(exitH)]) return false;
+    crossed[RefinedMesh::edgeOf(exitH)] = 1;
     events.push_back({-1, exitH, exitT});
     origin = (1.0 - exitT) * uvOf(exitH) + exitT * uvOf(m.next(exitH));
     cur = -1, entry = next;
@@ -228,7 +231,9 @@ bool straightenOne(Layout& L, int e, PathSmoothingResult& r, std::string& error)
     size_t j = chain.size() - 1;
     for (; j > i + 1; --j) {
       const int h = m.findHalfedge(chain[i], chain[j]);
-      if (h >= 0 && L.edgePath[RefinedMesh::edgeOf(h)] < 0) break;
+      // A chord inside the quadrilateral (a and b may also be joined by an edge elsewhere).
+      if (h >= 0 && L.edgePath[RefinedMesh::edgeOf(h)] < 0 && inQuad(m.face(h)) && inQuad(m.face(RefinedMesh::twin(h))))
+        break;
     }
     i = j;
   }

@@ -124,15 +124,23 @@ CrossParameterizationResult crossParameterize(const IndexedMesh& source, const s
   if (!r.layouts.status) return r.status = r.layouts.status, r;
   auto t1 = std::chrono::steady_clock::now();
   if (options.straightening.rounds > 0) {
-    // Each surface on its own; a result that fails its checks is dropped for the traced layout.
-    auto straighten = [&](Layout& L, PathSmoothingResult& out) {
+    // Both surfaces or neither: if either result fails its checks, both layouts stay as traced
+    // (corresponding quadrilaterals must get corresponding diagonals).
+    auto straighten = [&](const Layout& L, PathSmoothingResult& out) {
       Layout copy = L;
       out = straightenPaths(copy, options.straightening);
-      if (out.status && validateLayout(copy, euler).status) L = std::move(copy);
-      else r.straightenFailed = true;
+      if (out.status)
+        if (const LayoutCheck c = validateLayout(copy, euler); !c.status) out.status = c.status;
+      return copy;
     };
-    straighten(r.layouts.source, r.straightenSource);
-    straighten(r.layouts.target, r.straightenTarget);
+    Layout s = straighten(r.layouts.source, r.straightenSource);
+    Layout t = straighten(r.layouts.target, r.straightenTarget);
+    if (r.straightenSource.status && r.straightenTarget.status) {
+      r.layouts.source = std::move(s);
+      r.layouts.target = std::move(t);
+    } else {
+      r.straightenFailed = true;
+    }
     if (!checkIsomorphic(r.layouts.source, r.layouts.target))
       return r.status = Status::error(ErrorCode::InternalError, "the straightened layouts are not isomorphic"), r;
     r.times.straighten = seconds(t1);
@@ -151,10 +159,14 @@ CrossParameterizationResult crossParameterize(const IndexedMesh& source, const s
     if (!r.smoothing.status) return r.status = r.smoothing.status, r;
   }
   r.times.parameterization = seconds(t1);
+  if (options.untangle) {
+    const auto t2 = std::chrono::steady_clock::now();
+    r.composedMetrics = computeDistortion(source, r.map.sourceImage, target, r.map.sourceToTarget);
+    r.times.distortion = seconds(t2);
+    if (!r.composedMetrics.status) return r.status = r.composedMetrics.status, r;
+  }
   t1 = std::chrono::steady_clock::now();
   if (options.untangle) {
-    r.composedMetrics = computeDistortion(source, r.map.sourceImage, target, r.map.sourceToTarget);
-    if (!r.composedMetrics.status) return r.status = r.composedMetrics.status, r;
     std::vector<char> fixedS(source.vertexCount(), 0), fixedT(target.vertexCount(), 0);
     for (int v : sa) fixedS[v] = 1;
     for (int v : ta) fixedT[v] = 1;
@@ -169,7 +181,7 @@ CrossParameterizationResult crossParameterize(const IndexedMesh& source, const s
   r.times.untangle = seconds(t1);
   t1 = std::chrono::steady_clock::now();
   r.metrics = computeDistortion(source, r.map.sourceImage, target, r.map.sourceToTarget);
-  r.times.distortion = seconds(t1);
+  r.times.distortion += seconds(t1);
   if (!r.metrics.status) return r.status = r.metrics.status, r;
   if (!options.untangle) r.composedMetrics = r.metrics;
   r.times.total = seconds(t0);

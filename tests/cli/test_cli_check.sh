@@ -207,6 +207,11 @@ ok = (d['status'] == 'ok' and vcount('map_%s/mst.ply' % m) == 6200 and vcount('m
       and met['e_l2'] >= 1.0 and met['e_ang'] >= 0.0 and met['e_l2_inverse'] >= 1.0
       and all(k in d['timing_s'] for k in ('voronoi', 'source_layout', 'target_layout', 'parameterization', 'total'))
       and d['layout']['edges'] == 3 * (28 - 2) and d['layout']['patches'] == 2 * (28 - 2))
+# Straightening (on by default, both surfaces) and the composed map's metrics.
+st = d.get('straighten', {})
+ok = ok and st.get('rounds') == 2 and st.get('failed') is False and 'straighten' in d['timing_s']
+ok = ok and all(0 < st[s]['straightened'] <= d['layout']['edges'] and st[s]['splits'] > 0 for s in ('source', 'target'))
+ok = ok and met['composed']['e_l2'] >= 1.0 and met['composed']['flipped'] >= 0
 lines = open('map_%s/correspondence.txt' % m).read().splitlines()
 ok = ok and len(lines) == 6201
 print('ok' if ok else 'bad', 'E_L2 %.3f E_ang %.3f flipped %d' % (met['e_l2'], met['e_ang'], met['flipped']))
@@ -218,6 +223,16 @@ PY
       bad "cbd map bull -> cow ($method): exit $rc, $res $(cat map.err)"
     fi
   done
+  # --straighten 0: the paths as traced, no straighten report, other paths than the default's.
+  "$CBD" map --source "$MESHES/bull.off" --source-anchors "$EXAMPLES/bull_picked_points.pp" \
+    --target "$MESHES/cow.off" --target-anchors "$EXAMPLES/cow_picked_points.pp" --straighten 0 \
+    --out map_traced --json map_traced.json >/dev/null 2>&1; rc=$?
+  res=$(python3 -c "import json;d=json.load(open('map_traced.json'));print(d['status'], 'straighten' in d, d['layout']['edges'])" 2>/dev/null)
+  if [ "$rc" = 0 ] && [ "$res" = "ok False 78" ] && ! cmp -s map_traced/target/paths.ply map_voronoi/target/paths.ply; then
+    ok "cbd map --straighten 0: paths as traced ($res)"
+  else
+    bad "cbd map --straighten 0: exit $rc, $res"
+  fi
   # Determinism: the same run again gives byte-identical files.
   "$CBD" map --source "$MESHES/bull.off" --source-anchors "$EXAMPLES/bull_picked_points.pp" \
     --target "$MESHES/cow.off" --target-anchors "$EXAMPLES/cow_picked_points.pp" --out map_again --morph 3 >/dev/null 2>&1

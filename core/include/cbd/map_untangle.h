@@ -12,7 +12,8 @@
 /// faces, so an image never leaves the surface) to unflip them:
 /// 1. local moves of a flipped triangle's vertices (towards averages of the neighbours'
 ///    images, across opposite edges, on rings of directions) that reduce the vertex's bad
-///    triangles without leaving one distorted beyond `maxDistortion`;
+///    triangles without leaving one distorted beyond `maxDistortion` (or, for one that is
+///    already, beyond what it is);
 /// 2. relaxation of a growing ring around what is left that never adds a bad triangle;
 /// 3. whole-region convex-combination relaxation of folds, kept when it helps;
 /// 4. for what is still left, Gauss-Seidel minimisation of a smooth energy that stays finite

@@ -44,7 +44,8 @@ int splitCollinearFaces(Layout& layout);
 /// true (a vertex is free when it is at its first corner met, faces in order, and then at all);
 /// the free vertices are solved for. `uv[i]` receives the corners of `faces[i]`, `unknowns`
 /// (optional) the free vertex count. Bijective when the fixed corners run around a convex
-/// polygon (Tutte/Floater). False: a singular system.
+/// polygon (Tutte/Floater). False: a singular system, or a vertex fixed at one corner and free
+/// at another.
 bool meanValueMap(const RefinedMesh& mesh, const std::vector<int>& faces,
                   const std::function<bool(int, int, Vec2&)>& fixedAt, std::vector<std::array<Vec2, 3>>& uv,
                   int* unknowns = nullptr);

@@ -90,8 +90,9 @@ LayoutPair buildLayouts(const IndexedMesh& source, const std::vector<int>& sourc
 struct CrossParameterizationResult {
   Status status;
   LayoutPair layouts;                 ///< straightened, collinear faces split for parameterization
-  /// Path straightening of each layout. A layout whose straightening failed (status not ok) or
-  /// did not validate is kept as traced, and `straightenFailed` says so.
+  /// Path straightening of each layout. When either failed or its result did not validate (that
+  /// one's status says why), both layouts are kept as traced and `straightenFailed` is set; the
+  /// counts are then of the attempt thrown away.
   PathSmoothingResult straightenSource, straightenTarget;
   bool straightenFailed = false;
   PatchParameterization sourceParam, targetParam;
@@ -101,7 +102,8 @@ struct CrossParameterizationResult {
   MapUntangleResult untangleTarget;   ///< M_ts (target vertices on the source)
   DistortionMetrics metrics;          ///< of M_st against the source
   /// The same of M_st as composed, before untangling: what the base domains and their patch
-  /// maps give by themselves (equal to `metrics` when untangling is off).
+  /// maps give by themselves (after `smoothing`, when asked for; equal to `metrics` when
+  /// untangling is off).
   DistortionMetrics composedMetrics;
   StageTimes times;
 };
