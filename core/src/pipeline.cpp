@@ -133,8 +133,11 @@ CrossParameterizationResult crossParameterize(const IndexedMesh& source, const s
         if (const LayoutCheck c = validateLayout(copy, euler); !c.status) out.status = c.status;
       return copy;
     };
+    // The surfaces are independent: the target on a second thread.
+    Layout t;
+    std::thread other([&] { t = straighten(r.layouts.target, r.straightenTarget); });
     Layout s = straighten(r.layouts.source, r.straightenSource);
-    Layout t = straighten(r.layouts.target, r.straightenTarget);
+    other.join();
     if (r.straightenSource.status && r.straightenTarget.status) {
       r.layouts.source = std::move(s);
       r.layouts.target = std::move(t);
