@@ -402,10 +402,7 @@ GreedyLayoutResult buildGreedyLayout(const IndexedMesh& S, const std::vector<int
     L.edges = edges;
     for (size_t e = 0; e < edges.size(); ++e) {
       L.edges[e].vertices = chains[s][e];
-      double len = 0;
-      for (size_t k = 0; k + 1 < chains[s][e].size(); ++k)
-        len += (L.mesh.position(chains[s][e][k + 1]) - L.mesh.position(chains[s][e][k])).norm();
-      L.edges[e].length = len;
+      L.edges[e].length = chainLength(L.mesh, chains[s][e]);
     }
     L.edgePath = sides[s]->tracer.edgePath();
     if (Status st2 = assemblePatches(L); !st2) return r.status = st2, r;

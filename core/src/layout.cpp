@@ -353,6 +353,21 @@ void RegionTracker::undo() {
   undo_.pop_back();
 }
 
+double chainLength(const RefinedMesh& m, const std::vector<int>& chain) {
+  double len = 0;
+  for (size_t k = 1; k < chain.size(); ++k) len += (m.position(chain[k]) - m.position(chain[k - 1])).norm();
+  return len;
+}
+
+std::vector<double> chainFractions(const RefinedMesh& m, const std::vector<int>& chain) {
+  std::vector<double> acc(chain.size(), 0.0);
+  for (size_t k = 1; k < chain.size(); ++k) acc[k] = acc[k - 1] + (m.position(chain[k]) - m.position(chain[k - 1])).norm();
+  const double total = acc.empty() ? 0.0 : acc.back();
+  for (size_t k = 0; k < chain.size(); ++k)
+    acc[k] = total > 0 ? acc[k] / total : static_cast<double>(k) / static_cast<double>(std::max<size_t>(1, chain.size() - 1));
+  return acc;
+}
+
 int leavingHalfedge(const RefinedMesh& m, const std::vector<int>& chain, int v) {
   if (chain.front() == v) return m.findHalfedge(chain[0], chain[1]);
   return m.findHalfedge(chain.back(), chain[chain.size() - 2]);

@@ -170,6 +170,7 @@ class SurfaceWalker {
 struct Score {
   int bad = 0;
   double cost = 0.0;
+  bool overBound = false;  ///< a good triangle costs more than its bound (scoring stopped there)
   bool betterThan(const Score& o) const { return bad < o.bad || (bad == o.bad && cost < o.cost * (1.0 - 1e-9)); }
 };
 
@@ -286,10 +287,16 @@ MapUntangleResult untangleOnce(const IndexedMesh& S, const IndexedMesh& T, const
     return e;
   };
   auto bad = [&](int f) { return evalFace(f, -1, Vec3::Zero(), -1).bad; };
-  auto score = [&](int v, const Vec3& x, int g) {
+  // With `bound` (per triangle of v, in facesOf order), stops at the first good triangle above
+  // its bound.
+  auto score = [&](int v, const Vec3& x, int g, const std::vector<double>* bound = nullptr) {
     Score s;
-    for (int f : facesOf[v]) {
-      const FaceEval e = evalFace(f, v, x, g);
+    for (size_t i = 0; i < facesOf[v].size(); ++i) {
+      const FaceEval e = evalFace(facesOf[v][i], v, x, g);
+      if (bound && !e.bad && e.cost > (*bound)[i]) {
+        s.overBound = true;
+        return s;
+      }
       s.bad += e.bad;
       s.cost += e.cost;
     }
@@ -422,15 +429,10 @@ MapUntangleResult untangleOnce(const IndexedMesh& S, const IndexedMesh& T, const
         }
         auto tryStep = [&](const Vec3& d) {
           const FacePoint fp = walker.walk(onTarget[v], d);
-          const Vec3 x = walker.point(fp);
           // Trading a flip for a badly distorted triangle is no gain, nor is making a distorted
           // one (a sliver of the source, say) worse: such candidates are out.
-          for (size_t i = 0; i < facesOf[v].size(); ++i) {
-            const FaceEval e = evalFace(facesOf[v][i], v, x, fp.face);
-            if (!e.bad && e.cost > bound[i]) return;
-          }
-          const Score s = score(v, x, fp.face);
-          if (s.betterThan(best)) best = s, bestFp = fp;
+          const Score s = score(v, walker.point(fp), fp.face, &bound);
+          if (!s.overBound && s.betterThan(best)) best = s, bestFp = fp;
         };
         for (const Vec3& goal : goals)
           for (double step : {1.0, 0.5, 0.25, 0.125, 1.5}) tryStep(step * (goal - image[v]));

@@ -35,11 +35,10 @@ PathPosition pathPositions(const Layout& L) {
   for (int v : L.anchorVertices) pp.edge[v] = -2;
   for (size_t e = 0; e < L.edges.size(); ++e) {
     const auto& c = L.edges[e].vertices;
-    std::vector<double> acc(c.size(), 0.0);
-    for (size_t k = 1; k < c.size(); ++k) acc[k] = acc[k - 1] + (L.mesh.position(c[k]) - L.mesh.position(c[k - 1])).norm();
+    const std::vector<double> f = chainFractions(L.mesh, c);
     for (size_t k = 1; k + 1 < c.size(); ++k) {
       pp.edge[c[k]] = static_cast<int>(e);
-      pp.fraction[c[k]] = acc.back() > 0 ? acc[k] / acc.back() : static_cast<double>(k) / (c.size() - 1);
+      pp.fraction[c[k]] = f[k];
     }
   }
   return pp;

@@ -14,21 +14,6 @@ namespace {
 
 double cross2(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
 
-/// Arc-length fraction of every vertex of a chain from its first vertex.
-std::vector<double> chainFractions(const RefinedMesh& m, const std::vector<int>& chain) {
-  std::vector<double> acc(chain.size(), 0.0);
-  for (size_t k = 1; k < chain.size(); ++k) acc[k] = acc[k - 1] + (m.position(chain[k]) - m.position(chain[k - 1])).norm();
-  for (size_t k = 0; k < chain.size(); ++k)
-    acc[k] = acc.back() > 0 ? acc[k] / acc.back() : static_cast<double>(k) / std::max<size_t>(1, chain.size() - 1);
-  return acc;
-}
-
-double chainLength(const RefinedMesh& m, const std::vector<int>& chain) {
-  double len = 0;
-  for (size_t k = 1; k < chain.size(); ++k) len += (m.position(chain[k]) - m.position(chain[k - 1])).norm();
-  return len;
-}
-
 /// One step of the segment walk: stop at a mesh vertex, or split halfedge `h` at `t`.
 struct Event {
   int vertex = -1;
@@ -99,13 +84,8 @@ bool straightenOne(Layout& L, int e, PathSmoothingResult& r, std::string& error)
   // A vertex the segment may pass through: inside the quadrilateral (on no other path, no
   // anchor but b) and not yet on the new path.
   auto onOtherPath = [&](int v) {
-    const int start = m.outgoing(v);
-    int h = start;
-    do {
-      const int p = L.edgePath[RefinedMesh::edgeOf(h)];
-      if (p >= 0 && p != e) return true;
-      h = m.rotateCCW(h);
-    } while (h != start);
+    for (int p : rotationAt(m, L.edgePath, v))
+      if (p != e) return true;
     return false;
   };
   std::vector<int> visited;

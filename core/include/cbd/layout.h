@@ -186,6 +186,13 @@ class RegionTracker {
 /// The halfedge by which a path (vertex chain) leaves its end vertex v.
 int leavingHalfedge(const RefinedMesh& mesh, const std::vector<int>& chain, int v);
 
+/// Length of a vertex chain of `mesh` (sum of its segments).
+double chainLength(const RefinedMesh& mesh, const std::vector<int>& chain);
+
+/// Arc-length fraction of every vertex of a chain from its first vertex (0 ... 1; evenly
+/// spaced by index when the chain has no length).
+std::vector<double> chainFractions(const RefinedMesh& mesh, const std::vector<int>& chain);
+
 /// Layout edges leaving vertex v, counter-clockwise (path ids of the path edges around it).
 std::vector<int> rotationAt(const RefinedMesh& mesh, const std::vector<int>& edgePath, int v);
 
