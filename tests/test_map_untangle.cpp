@@ -192,3 +192,60 @@ TEST(MapUntangle, FoldedVerticesAreUntangledOnTheSurfaceWithAnchorsFixed) {
   edge /= m.faceCount();
   for (int v : thrown) EXPECT_LT((image[v] - m.positions[v]).norm(), 1.5 * edge) << "vertex " << v;
 }
+
+TEST(MapUntangle, PolishLowersBothMetricsAndAddsNoFlip) {
+  // The identity of a bumpy sphere with every free vertex's image slid into one of its faces
+  // (a jittered map on the surface: distorted, not folded), plus one vertex thrown across its
+  // neighbours so that there is a flip to untangle. With the polish, E_ang must fall to a tenth of
+  // the unpolished untangling's, E_L2 must not rise, and no flip may come back.
+  IndexedMesh m = fx::icosphere(3);
+  for (auto& p : m.positions) p *= 1.0 + 0.1 * std::sin(5 * p.x()) * std::cos(4 * p.y());
+  std::vector<FacePoint> on;
+  std::vector<Vec3> image;
+  identityMap(m, on, image);
+  std::vector<char> fixed(m.vertexCount(), 0);
+  for (int v = 0; v < m.vertexCount(); v += 9) fixed[v] = 1;
+  for (int v = 0; v < m.vertexCount(); ++v) {
+    if (fixed[v]) continue;
+    const auto& t = m.faces[on[v].face];
+    const int k = static_cast<int>(std::find(t.begin(), t.end(), v) - t.begin());
+    const double s = 0.25 + 0.2 * std::sin(1.7 * v);  // how far into the face, 0.05 .. 0.45
+    on[v].bary = Vec3::Constant(0.5 * s);
+    on[v].bary[k] = 1.0 - s;
+    image[v] = pointOf(m, on[v]);
+  }
+  const int thrown = 100;
+  ASSERT_FALSE(fixed[thrown]);
+  const std::vector<int> d = ringDistance(m, thrown);
+  for (int f = 0; f < m.faceCount(); ++f) {
+    const auto& t = m.faces[f];
+    if (std::min({d[t[0]], d[t[1]], d[t[2]]}) == 1 && std::max({d[t[0]], d[t[1]], d[t[2]]}) == 2) {
+      on[thrown] = FacePoint{f, Vec3(0.2, 0.4, 0.4)};
+      break;
+    }
+  }
+  image[thrown] = pointOf(m, on[thrown]);
+  ASSERT_GT(computeDistortion(m, image, m, on).flipped, 0);
+
+  MapUntangleOptions raw;
+  raw.polishSweeps = 0;
+  std::vector<FacePoint> onRaw = on, onPolished = on;
+  std::vector<Vec3> imageRaw = image, imagePolished = image;
+  const MapUntangleResult rr = untangleCrossMap(m, m, fixed, onRaw, imageRaw, raw);
+  const MapUntangleResult rp = untangleCrossMap(m, m, fixed, onPolished, imagePolished);
+  ASSERT_EQ(rr.flippedAfter, 0);
+  EXPECT_EQ(rp.flippedAfter, 0);
+  EXPECT_GT(rp.moves, rr.moves);
+  const DistortionMetrics dr = computeDistortion(m, imageRaw, m, onRaw);
+  const DistortionMetrics dp = computeDistortion(m, imagePolished, m, onPolished);
+  EXPECT_EQ(dp.flipped, 0);
+  EXPECT_EQ(dp.degenerate, 0);
+  EXPECT_LT(dp.eAng, 0.1 * dr.eAng) << "unpolished " << dr.eAng << ", polished " << dp.eAng;
+  EXPECT_LE(dp.eL2, dr.eL2 * (1 + 1e-9)) << "unpolished " << dr.eL2 << ", polished " << dp.eL2;
+  for (int v = 0; v < m.vertexCount(); ++v) {
+    ASSERT_GE(onPolished[v].face, 0);
+    EXPECT_GE(onPolished[v].bary.minCoeff(), -1e-12);
+    EXPECT_LT((pointOf(m, onPolished[v]) - imagePolished[v]).norm(), 1e-12);
+    if (fixed[v]) EXPECT_EQ(imagePolished[v], image[v]) << "anchor " << v << " moved";
+  }
+}

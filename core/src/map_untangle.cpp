@@ -215,7 +215,7 @@ double l2StretchOf(const IndexedMesh& S, const std::vector<Vec3>& image) {
   return sumAt > 0 ? std::sqrt(l2 / sumAt) * std::sqrt(sumAs / sumAt) : 0.0;
 }
 
-/// One run of stages 1-5 with the options' bound (flip counts are left to the caller: 0 here).
+/// One run of stages 1-4 with the options' bound (flip counts are left to the caller: 0 here).
 /// Internally a triangle is bad when it faces
 /// against the normals of the target faces its corners were located in (`imageFlipped`): at a
 /// corner on a target edge or vertex that is stricter than the metrics' test, never looser.
@@ -328,11 +328,9 @@ MapUntangleResult untangleOnce(const IndexedMesh& S, const IndexedMesh& T, const
     if (ws > 0) out.push_back(m / ws);
     return out;
   };
-  std::vector<char> moved(nv, 0);
   auto apply = [&](int v, const FacePoint& fp) {
     onTarget[v] = fp;
     image[v] = walker.point(fp);
-    moved[v] = 1;
     ++r.moves;
   };
 
@@ -386,7 +384,7 @@ MapUntangleResult untangleOnce(const IndexedMesh& S, const IndexedMesh& T, const
       if (regionBad() < before) {
         improved = true;
         for (size_t i = 0; i < region.size(); ++i)
-          if (image[region[i]] != keepX[i]) moved[region[i]] = 1, ++r.moves;
+          if (image[region[i]] != keepX[i]) ++r.moves;
       } else {
         for (size_t i = 0; i < region.size(); ++i) onTarget[region[i]] = keepFp[i], image[region[i]] = keepX[i];
       }
@@ -496,7 +494,12 @@ MapUntangleResult untangleOnce(const IndexedMesh& S, const IndexedMesh& T, const
   //    when fewer triangles are bad.
   for (int pass = 0; pass < options.energyPasses && badNow > 0 && options.energySweeps > 0; ++pass) {
     const std::vector<int> dist = ringsAroundBad(options.maxRing);
-    // Signed image area along the target normal, per unit of (globally scaled) source area.
+    // The region's own area scale (image area per unit of source area, before relaxing): the
+    // energy's area term then keeps the local scale of the composed map rather than pulling it
+    // to the global one (which, where the map compresses, spreads the region over its
+    // neighbours and raises E_L2).
+    double regionScale = areaScale;
+    // Signed image area along the target normal, per unit of (region-scaled) source area.
     auto signedRatio = [&](int f, int v, const Vec3& x, int g) {
       const auto& t = S.faces[f];
       Vec3 p[3];
@@ -506,7 +509,7 @@ MapUntangleResult untangleOnce(const IndexedMesh& S, const IndexedMesh& T, const
       Vec3 nt = targetNormalSum(normal, on[0], on[1], on[2]);
       nt = nt.norm() > 0 ? Vec3(nt.normalized()) : (c.norm() > 0 ? Vec3(c.normalized()) : Vec3::UnitZ());
       const double sa = (S.positions[t[1]] - S.positions[t[0]]).cross(S.positions[t[2]] - S.positions[t[0]]).norm();
-      return c.dot(nt) / (sa * areaScale);
+      return c.dot(nt) / (sa * regionScale);
     };
     double delta = 0;
     auto faceEnergy = [&](int f, int v, const Vec3& x, int g) {
@@ -524,8 +527,8 @@ MapUntangleResult untangleOnce(const IndexedMesh& S, const IndexedMesh& T, const
       if (!(ia > 0)) return 1e12;
       const double ibx = ief.dot(ie) / ia, iby = ie.cross(ief).norm() / ia;
       const double j11 = ia / sa, j12 = (ibx - ia * sbx / sa) / sby, j22 = iby / sby;
-      const double frob = (j11 * j11 + j12 * j12 + j22 * j22) / areaScale;
-      return frob / (2.0 * h) + 0.5 * (h + 1.0 / h);
+      const double frob = (j11 * j11 + j12 * j12 + j22 * j22) / regionScale;
+      return frob / (2.0 * h) + 0.5 * (h + 1.0 / h) + options.energyStretchWeight * 0.5 * h * frob;
     };
     auto vertexEnergy = [&](int v, const Vec3& x, int g) {
       double e = 0;
@@ -535,6 +538,13 @@ MapUntangleResult untangleOnce(const IndexedMesh& S, const IndexedMesh& T, const
     // Each connected region of the rings on its own.
     const bool improved = relaxRegions(dist, options.maxRing + 1, [&](const std::vector<int>& region,
                                                                         const std::vector<int>& faces) {
+      double as = 0, at = 0;
+      for (int f : faces) {
+        const auto& t = S.faces[f];
+        as += (S.positions[t[1]] - S.positions[t[0]]).cross(S.positions[t[2]] - S.positions[t[0]]).norm();
+        at += (image[t[1]] - image[t[0]]).cross(image[t[2]] - image[t[0]]).norm();
+      }
+      regionScale = as > 0 && at > 0 ? at / as : areaScale;
       for (int sweep = 0; sweep < options.energySweeps; ++sweep) {
         double dmin = 1e300;
         for (int f : faces) dmin = std::min(dmin, signedRatio(f, -1, Vec3::Zero(), -1));
@@ -582,29 +592,180 @@ MapUntangleResult untangleOnce(const IndexedMesh& S, const IndexedMesh& T, const
        f *= options.lastResortFactor) {
     const std::vector<FacePoint> keepFp = onTarget;
     const std::vector<Vec3> keepX = image;
-    const std::vector<char> keepMoved = moved;
     const int keepMoves = r.moves, keepBad = badNow;
     const double before = l2Stretch();
     untangleWith(options.maxDistortion * f);
     if (badNow < keepBad && l2Stretch() <= options.maxStretchGrowth * before) continue;
-    onTarget = keepFp, image = keepX, moved = keepMoved, r.moves = keepMoves, badNow = keepBad;
+    onTarget = keepFp, image = keepX, r.moves = keepMoves, badNow = keepBad;
     break;
   }
-  // Polish: sweeps over every vertex towards its neighbours' weighted average, each move kept
-  // only when it lowers the distortion of the vertex's triangles and adds no bad one.
-  for (int sweep = 0; sweep < options.polishSweeps; ++sweep)
-    for (int v = 0; v < nv; ++v) {
-      if (!movable(v)) continue;
-      const Score cur = score(v, image[v], onTarget[v].face);
-      const Vec3 goal = averages(v).back();
-      const FacePoint fp = walker.walk(onTarget[v], 0.5 * (goal - image[v]));
-      const Score s = score(v, walker.point(fp), fp.face);
-      if (s.bad <= cur.bad && s.cost < cur.cost) apply(v, fp);
-    }
   // Flips are counted by the caller, as the metrics count them.
   for (int f = 0; f < nf; ++f) r.degenerateAfter += evalFace(f, -1, Vec3::Zero(), -1).degenerate;
-  r.movedVertices = static_cast<int>(std::count(moved.begin(), moved.end(), 1));
   return r;
+}
+
+/// Stage 5: Gauss-Seidel sweeps that move single images along the target surface so that
+/// neither the numerator of E_ang (sum of source area x angle distortion) nor E_L2 (sum of image
+/// area x |J|^2 / 2 over the squared image area) grows, one of them falls, and no triangle of
+/// the vertex turns bad (flipped or degenerate by the untangling's own test). Candidates: half
+/// way to the mean-value average of the neighbours' images, then a line search along the
+/// bisector of the two metrics' steepest descents in the tangent plane (a direction that lowers
+/// both while they do not pull opposite ways). Only vertices next to a move are visited again.
+/// Returns the number of accepted moves.
+int polishMap(const IndexedMesh& S, const IndexedMesh& T, const std::vector<char>& fixed,
+              std::vector<FacePoint>& onTarget, std::vector<Vec3>& image, const MapUntangleOptions& options) {
+  if (options.polishSweeps <= 0) return 0;
+  const int nv = S.vertexCount(), nf = S.faceCount();
+  const SurfaceWalker walker(T);
+  const std::vector<Vec3>& normal = walker.normals();
+  double diag2 = 0;
+  {
+    Vec3 lo = Vec3::Constant(1e300), hi = -lo;
+    for (const Vec3& p : T.positions) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+    diag2 = (hi - lo).squaredNorm();
+  }
+  std::vector<std::vector<int>> facesOf(nv), nbr(nv);
+  for (int f = 0; f < nf; ++f)
+    for (int k = 0; k < 3; ++k) {
+      facesOf[S.faces[f][k]].push_back(f);
+      nbr[S.faces[f][k]].push_back(S.faces[f][(k + 1) % 3]);
+      nbr[S.faces[f][k]].push_back(S.faces[f][(k + 2) % 3]);
+    }
+  for (auto& n : nbr) {
+    std::sort(n.begin(), n.end());
+    n.erase(std::unique(n.begin(), n.end()), n.end());
+  }
+  std::vector<double> sourceArea(nf);
+  for (int f = 0; f < nf; ++f) {
+    const auto& t = S.faces[f];
+    sourceArea[f] = 0.5 * (S.positions[t[1]] - S.positions[t[0]]).cross(S.positions[t[2]] - S.positions[t[0]]).norm();
+  }
+  // One triangle's share of the metrics with vertex v (optionally) at x on face g.
+  struct Terms {
+    bool bad = false;
+    double at = 0, l2 = 0, ang = 0;
+  };
+  auto terms = [&](int f, int v, const Vec3& x, int g) {
+    const auto& t = S.faces[f];
+    Vec3 p[3];
+    int on[3];
+    for (int k = 0; k < 3; ++k) p[k] = t[k] == v ? x : image[t[k]], on[k] = t[k] == v ? g : onTarget[t[k]].face;
+    Terms e;
+    const Vec3 c = (p[1] - p[0]).cross(p[2] - p[0]);
+    e.at = 0.5 * c.norm();
+    double frob = 0;
+    const double a = angleDistortion(S.positions[t[0]], S.positions[t[1]], S.positions[t[2]], p[0], p[1], p[2], &frob);
+    e.bad = e.at <= 1e-12 * diag2 || frob >= 1e12 || imageFlipped(p[0], p[1], p[2], normal, on[0], on[1], on[2]);
+    e.l2 = e.at * 0.5 * frob;
+    e.ang = sourceArea[f] * a;
+    return e;
+  };
+  double sumAt = 0, sumL2 = 0, sumAng = 0;
+  for (int f = 0; f < nf; ++f) {
+    const Terms e = terms(f, -1, Vec3::Zero(), -1);
+    if (e.bad && e.at <= 1e-12 * diag2) continue;
+    sumAt += e.at, sumL2 += e.l2, sumAng += e.ang;
+  }
+  if (!(sumAt > 0)) return 0;
+  auto movable = [&](int v) { return !facesOf[v].empty() && onTarget[v].face >= 0 && !(v < (int)fixed.size() && fixed[v]); };
+  std::vector<char> active(nv, 0);
+  for (int v = 0; v < nv; ++v) active[v] = movable(v);
+  int moves = 0;
+  std::vector<Terms> cur;
+  for (int sweep = 0; sweep < options.polishSweeps; ++sweep) {
+    std::vector<char> next(nv, 0);
+    int swept = 0;
+    const double angStart = sumAng, l2Start = sumL2 / (sumAt * sumAt);
+    for (int v = 0; v < nv; ++v) {
+      if (!active[v]) continue;
+      // The vertex's triangles as they are; a degenerate one is left to the untangling.
+      cur.clear();
+      double at0 = 0, l20 = 0, ang0 = 0;
+      bool degenerate = false;
+      for (int f : facesOf[v]) {
+        cur.push_back(terms(f, -1, Vec3::Zero(), -1));
+        degenerate |= cur.back().at <= 1e-12 * diag2 || cur.back().l2 >= 1e11;
+        at0 += cur.back().at, l20 += cur.back().l2, ang0 += cur.back().ang;
+      }
+      if (degenerate) continue;
+      const double l2Now = sumL2 / (sumAt * sumAt);
+      // (E_ang numerator of the star, E_L2 proxy of the whole map) with v at fp; nullopt-like
+      // `ok` false when a good triangle turns bad.
+      auto evaluate = [&](const FacePoint& fp, const Vec3& x, bool& ok, double& at, double& l2) {
+        double ang = 0;
+        at = 0, l2 = 0;
+        ok = true;
+        for (size_t i = 0; i < facesOf[v].size(); ++i) {
+          const Terms e = terms(facesOf[v][i], v, x, fp.face);
+          if (e.bad && !cur[i].bad) ok = false;
+          at += e.at, l2 += e.l2, ang += e.ang;
+        }
+        const double a = sumAt - at0 + at;
+        return std::make_pair(ang, a > 0 ? (sumL2 - l20 + l2) / (a * a) : 1e300);
+      };
+      bool done = false;
+      auto accept = [&](const FacePoint& fp) {
+        const Vec3 x = walker.point(fp);
+        bool ok = false;
+        double at = 0, l2 = 0;
+        const auto [ang, l2Map] = evaluate(fp, x, ok, at, l2);
+        if (!ok || ang > ang0 || l2Map > l2Now || !(ang < ang0 * (1 - 1e-12) || l2Map < l2Now * (1 - 1e-12))) return false;
+        sumAt += at - at0, sumL2 += l2 - l20, sumAng += ang - ang0;
+        onTarget[v] = fp, image[v] = x;
+        ++moves;
+        done = true;
+        for (int w : nbr[v]) next[w] = movable(w);
+        return true;
+      };
+      ++swept;
+      // Half way to the mean-value average of the neighbours' images (the source's weights).
+      Vec3 m = Vec3::Zero();
+      double ws = 0;
+      for (int f : facesOf[v]) {
+        const auto& t = S.faces[f];
+        const int k = t[0] == v ? 0 : t[1] == v ? 1 : 2;
+        const int a = t[(k + 1) % 3], b = t[(k + 2) % 3];
+        const Vec3 ea = S.positions[a] - S.positions[v], eb = S.positions[b] - S.positions[v];
+        const double tn = std::tan(0.5 * std::atan2(ea.cross(eb).norm(), ea.dot(eb)));
+        const double wa = tn / std::max(ea.norm(), 1e-300), wb = tn / std::max(eb.norm(), 1e-300);
+        m += wa * image[a] + wb * image[b];
+        ws += wa + wb;
+      }
+      if (ws > 0 && accept(walker.walk(onTarget[v], 0.5 * (m / ws - image[v])))) continue;
+      // The bisector of both metrics' steepest descents, by central differences on the surface.
+      double len = 0;
+      for (int w : nbr[v]) len += (image[w] - image[v]).norm();
+      len /= static_cast<double>(nbr[v].size());
+      if (!(len > 0)) continue;
+      const Vec3& n = normal[onTarget[v].face];
+      const Vec3 ax = (std::abs(n.x()) < 0.9 ? Vec3::UnitX() : Vec3::UnitY()).cross(n).normalized(), ay = n.cross(ax);
+      const double h = 1e-4 * len;
+      Vec3 gAng = Vec3::Zero(), gL2 = Vec3::Zero();
+      for (const Vec3& axis : {ax, ay}) {
+        std::pair<double, double> side[2];
+        for (int s = 0; s < 2; ++s) {
+          const FacePoint fp = walker.walk(onTarget[v], (s ? -h : h) * axis);
+          bool ok = false;
+          double at = 0, l2 = 0;
+          side[s] = evaluate(fp, walker.point(fp), ok, at, l2);
+        }
+        gAng += (side[0].first - side[1].first) / (2 * h) * axis;
+        gL2 += (side[0].second - side[1].second) / (2 * h) * axis;
+      }
+      Vec3 dir = Vec3::Zero();
+      if (gAng.norm() > 0) dir -= gAng.normalized();
+      if (gL2.norm() > 0) dir -= gL2.normalized();
+      if (!(dir.norm() > 1e-6)) continue;
+      dir.normalize();
+      for (double step = 0.5 * len; step > 1e-3 * len && !done; step *= 0.5) accept(walker.walk(onTarget[v], step * dir));
+    }
+    active.swap(next);
+    // Converged: nothing left to visit, or the sweep lowered neither metric by the tolerance.
+    if (swept == 0 || (sumAng >= angStart * (1 - options.polishTolerance) &&
+                       sumL2 / (sumAt * sumAt) >= l2Start * (1 - options.polishTolerance)))
+      break;
+  }
+  return moves;
 }
 
 }  // namespace
@@ -658,6 +819,12 @@ MapUntangleResult untangleCrossMap(const IndexedMesh& S, const IndexedMesh& T, c
       r.attempts = t.attempts;
     }
   }
+  // 5. The polish, once, on the map kept: it never turns a triangle bad, so the flip count
+  //    cannot grow (it is counted again all the same).
+  r.moves += polishMap(S, T, fixed, onTarget, image, options);
+  r.flippedAfter = flips(onTarget, image);
+  r.movedVertices = 0;
+  for (size_t v = 0; v < image.size(); ++v) r.movedVertices += image[v] != startImage[v];
   return r;
 }
 

@@ -18,13 +18,18 @@
 /// 3. whole-region convex-combination relaxation of folds, kept when it helps;
 /// 4. for what is still left, Gauss-Seidel minimisation of a smooth energy that stays finite
 ///    on flipped triangles (conformal + area terms over the regularised signed area of
-///    Escobar et al. 2003, "Simultaneous untangling and smoothing of tetrahedral meshes"),
-///    over each connected region of rings at once, kept when it has fewer bad triangles;
+///    Escobar et al. 2003, "Simultaneous untangling and smoothing of tetrahedral meshes", plus
+///    `energyStretchWeight` times the triangle's share of E_L2; areas measured against the
+///    region's own scale in the composed map), over each connected region of rings at once,
+///    kept when it has fewer bad triangles;
 ///    then, if flips are left, stages 1-4 once more with looser bounds (`lastResortFactor`),
 ///    each attempt kept only if E_L2 grows by at most `maxStretchGrowth`;
-/// 5. `polishSweeps` sweeps over every vertex that only lower distortion, never adding a flip;
-/// 6. if flips are left, all of it again from the composed map with the bounds of
-///    `retryDistortions`, keeping the best.
+/// 5. if flips are left, stages 1-4 again from the composed map with the bounds of
+///    `retryDistortions`, keeping the best;
+/// 6. on the map kept, up to `polishSweeps` sweeps of single-vertex moves over the whole map,
+///    each kept only when it raises neither E_ang nor E_L2, lowers one of them, and turns no
+///    triangle bad (so the flip count cannot grow); stops when a sweep lowers neither metric by
+///    `polishTolerance`.
 /// Internally a triangle counts as flipped by the stricter `imageFlipped`; what is reported is
 /// the metrics' count (`TargetNormals::flipped`). Anchors never move; a map without flipped
 /// triangles (the identity, say) is returned unchanged.
@@ -45,12 +50,18 @@ struct MapUntangleOptions {
   /// unless one was already: trading a flip for a badly stretched triangle is no gain (a
   /// higher bound removes more flips and raises E_L2).
   double maxDistortion = 10.0;
-  /// Sweeps over all vertices at the end that only lower distortion and never add a flip
-  /// (0: only the neighbourhoods of flips are touched).
-  int polishSweeps = 5;
+  /// Sweeps over all vertices at the end whose moves raise neither E_ang nor E_L2, lower one,
+  /// and add no flip (0: only the neighbourhoods of flips are touched).
+  int polishSweeps = 10;
+  /// The polish stops early when a sweep lowers neither metric by this fraction.
+  double polishTolerance = 1e-4;
   /// Gauss-Seidel sweeps of the smooth untangling energy over the rings of what local moves
   /// left flipped (0: none).
   int energySweeps = 30;
+  /// Weight of the triangle's share of E_L2 (image area x |J|^2 / 2, in the region's scale) in
+  /// that energy: without it, regions the composed map compresses are spread out over their
+  /// neighbours, and E_L2 (which weighs expansion by the image area) grows.
+  double energyStretchWeight = 0.3;
   int energyPasses = 4;   ///< repeats of those sweeps (regions taken anew) while flips go down
   /// When flips are left, stages 1-4 once more with `maxDistortion` times this, then times its
   /// square (<= 1: not)...
