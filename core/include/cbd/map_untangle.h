@@ -44,7 +44,9 @@ namespace cbd {
 /// Options of `untangleCrossMap`.
 struct MapUntangleOptions {
   int maxRounds = 40;     ///< rounds of (local moves, relaxation of a ring, of folds) at most
-  int maxRing = 6;        ///< widest ring (in source edges) around a flip that relaxation may move
+  /// Widest ring (in source edges) around a flip that relaxation may move (6 left folds in the
+  /// man's hands on man -> homer that 10 undoes).
+  int maxRing = 10;
   /// A move may not leave a triangle of the vertex with a distortion above this (angle
   /// distortion (s1/s2 + s2/s1)/2 - 1 plus the same of its area ratio to the global one),
   /// unless one was already: trading a flip for a badly stretched triangle is no gain (a
