@@ -249,3 +249,81 @@ TEST(MapUntangle, PolishLowersBothMetricsAndAddsNoFlip) {
     if (fixed[v]) EXPECT_EQ(imagePolished[v], image[v]) << "anchor " << v << " moved";
   }
 }
+
+TEST(MapUntangle, AnAnchorDiskFoldedIntoAWedgeIsLaidOutAnew) {
+  // The identity of a sphere with the disk of 3 rings round an anchor squeezed into a wedge:
+  // every direction about the anchor at a sixth of its angle, so that its neighbours all lie on
+  // one side of it and the triangle closing its star is turned over (as where the two layouts
+  // meet an anchor at very different corner angles, camel -> diplodocus-70 and man -> homer-70).
+  IndexedMesh m = fx::icosphere(3);
+  std::vector<FacePoint> on;
+  std::vector<Vec3> image;
+  identityMap(m, on, image);
+  const int a = 0;
+  std::vector<char> fixed(m.vertexCount(), 0);
+  const std::vector<int> d = ringDistance(m, a);
+  fixed[a] = 1;
+  const Vec3 n = m.positions[a].normalized();
+  const Vec3 ax = (std::abs(n.x()) < 0.9 ? Vec3::UnitX() : Vec3::UnitY()).cross(n).normalized(), ay = n.cross(ax);
+  // The squeezed point of v, located on the sphere by the closest face centre's face.
+  auto locate = [&](const Vec3& p) {
+    int best = -1;
+    double bestD = 1e300;
+    for (int f = 0; f < m.faceCount(); ++f) {
+      const auto& t = m.faces[f];
+      const double dd = ((m.positions[t[0]] + m.positions[t[1]] + m.positions[t[2]]) / 3 - p).squaredNorm();
+      if (dd < bestD) bestD = dd, best = f;
+    }
+    // Barycentric coordinates of p projected into that face.
+    const auto& t = m.faces[best];
+    const Vec3 e1 = m.positions[t[1]] - m.positions[t[0]], e2 = m.positions[t[2]] - m.positions[t[0]];
+    const Vec3 q = p - m.positions[t[0]];
+    const double a11 = e1.dot(e1), a12 = e1.dot(e2), a22 = e2.dot(e2), det = a11 * a22 - a12 * a12;
+    const double b1 = (a22 * e1.dot(q) - a12 * e2.dot(q)) / det, b2 = (a11 * e2.dot(q) - a12 * e1.dot(q)) / det;
+    Vec3 b(1 - b1 - b2, b1, b2);
+    b = b.cwiseMax(0.0);
+    return FacePoint{best, b / b.sum()};
+  };
+  for (int v = 0; v < m.vertexCount(); ++v) {
+    if (d[v] < 1 || d[v] > 3) continue;
+    const Vec3 r = m.positions[v] - m.positions[a];
+    const double angle = std::atan2(r.dot(ay), r.dot(ax)), len = (r - n * n.dot(r)).norm();
+    const double squeezed = (angle < 0 ? angle + 2 * M_PI : angle) / 6.0;
+    const Vec3 p = (m.positions[a] + len * (std::cos(squeezed) * ax + std::sin(squeezed) * ay)).normalized();
+    on[v] = locate(p);
+    image[v] = pointOf(m, on[v]);
+  }
+  const int flippedBefore = computeDistortion(m, image, m, on).flipped;
+  ASSERT_GT(flippedBefore, 0) << "the fixture must fold the anchor's star";
+
+  // Laying the disk out anew undoes the fold: nothing flipped, the images back near the
+  // identity (the flattened disk of a sphere, scaled), anchors where they were.
+  std::vector<FacePoint> on1 = on;
+  std::vector<Vec3> image1 = image;
+  ASSERT_TRUE(relayAnchorDisk(m, m, fixed, a, 3, on1, image1));
+  EXPECT_FALSE(relayAnchorDisk(m, m, fixed, m.vertexCount(), 3, on1, image1));
+  const DistortionMetrics dm = computeDistortion(m, image1, m, on1);
+  EXPECT_EQ(dm.flipped, 0);
+  EXPECT_EQ(dm.degenerate, 0);
+  double edge = 0;
+  for (const auto& t : m.faces) edge += (m.positions[t[1]] - m.positions[t[0]]).norm();
+  edge /= m.faceCount();
+  for (int v = 0; v < m.vertexCount(); ++v) {
+    if (d[v] >= 1 && d[v] <= 3) EXPECT_LT((image1[v] - m.positions[v]).norm(), 0.25 * edge) << "vertex " << v;
+    if (d[v] > 3) EXPECT_EQ(image1[v], image[v]) << "vertex " << v << " outside the disk moved";
+    EXPECT_LT((pointOf(m, on1[v]) - image1[v]).norm(), 1e-12);
+  }
+  // The anchor's neighbours wind once round its image again.
+  double winding = 0;
+  for (int f = 0; f < m.faceCount(); ++f) {
+    const auto& t = m.faces[f];
+    const int k = static_cast<int>(std::find(t.begin(), t.end(), a) - t.begin());
+    if (k == 3) continue;
+    Vec3 u = image1[t[(k + 1) % 3]] - image1[a], w = image1[t[(k + 2) % 3]] - image1[a];
+    u -= n * n.dot(u), w -= n * n.dot(w);  // in the tangent plane at the anchor
+    winding += std::atan2(u.cross(w).dot(n), u.dot(w));
+  }
+  EXPECT_NEAR(winding, 2 * M_PI, 1e-6);
+  for (int v = 0; v < m.vertexCount(); ++v)
+    if (fixed[v]) EXPECT_EQ(image1[v], image[v]) << "anchor " << v << " moved";
+}

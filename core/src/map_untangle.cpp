@@ -20,6 +20,51 @@ std::vector<Vec3> faceNormals(const IndexedMesh& m) {
 
 namespace {
 
+/// Squared diagonal of the bounding box of `points`.
+double boxDiagonal2(const std::vector<Vec3>& points) {
+  Vec3 lo = Vec3::Constant(1e300), hi = -lo;
+  for (const Vec3& p : points) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+  return (hi - lo).squaredNorm();
+}
+
+/// Per source vertex: the triangles around it, and its neighbours (sorted, each once).
+struct Stars {
+  std::vector<std::vector<int>> facesOf, nbr;
+  explicit Stars(const IndexedMesh& S) : facesOf(S.vertexCount()), nbr(S.vertexCount()) {
+    for (int f = 0; f < S.faceCount(); ++f)
+      for (int k = 0; k < 3; ++k) {
+        facesOf[S.faces[f][k]].push_back(f);
+        nbr[S.faces[f][k]].push_back(S.faces[f][(k + 1) % 3]);
+        nbr[S.faces[f][k]].push_back(S.faces[f][(k + 2) % 3]);
+      }
+    for (auto& n : nbr) {
+      std::sort(n.begin(), n.end());
+      n.erase(std::unique(n.begin(), n.end()), n.end());
+    }
+  }
+};
+
+/// The average of the images of v's neighbours with the source's mean-value weights (Floater
+/// 2003) over v's triangles `facesOfV`; false when the weights vanish.
+bool meanValueAverage(const IndexedMesh& S, const std::vector<int>& facesOfV, int v, const std::vector<Vec3>& image,
+                      Vec3& out) {
+  Vec3 m = Vec3::Zero();
+  double ws = 0;
+  for (int f : facesOfV) {
+    const auto& t = S.faces[f];
+    const int k = t[0] == v ? 0 : t[1] == v ? 1 : 2;
+    const int a = t[(k + 1) % 3], b = t[(k + 2) % 3];
+    const Vec3 ea = S.positions[a] - S.positions[v], eb = S.positions[b] - S.positions[v];
+    const double tn = std::tan(0.5 * std::atan2(ea.cross(eb).norm(), ea.dot(eb)));
+    const double wa = tn / std::max(ea.norm(), 1e-300), wb = tn / std::max(eb.norm(), 1e-300);
+    m += wa * image[a] + wb * image[b];
+    ws += wa + wb;
+  }
+  if (!(ws > 0)) return false;
+  out = m / ws;
+  return true;
+}
+
 /// The summed unit normals of the target faces under the three images of a face.
 Vec3 targetNormalSum(const std::vector<Vec3>& normal, int f0, int f1, int f2) {
   Vec3 nt = Vec3::Zero();
@@ -226,28 +271,14 @@ MapUntangleResult untangleOnce(const IndexedMesh& S, const IndexedMesh& T, const
   const int nv = S.vertexCount(), nf = S.faceCount();
   const SurfaceWalker walker(T);
   const std::vector<Vec3>& normal = walker.normals();
-  double diag2 = 0;
-  {
-    Vec3 lo = Vec3::Constant(1e300), hi = -lo;
-    for (const Vec3& p : T.positions) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
-    diag2 = (hi - lo).squaredNorm();
-  }
+  const double diag2 = boxDiagonal2(T.positions);
   // Target area per unit of source area, over the whole surfaces.
   double areaS = 0, areaT = 0;
   for (const auto& t : S.faces) areaS += (S.positions[t[1]] - S.positions[t[0]]).cross(S.positions[t[2]] - S.positions[t[0]]).norm();
   for (const auto& t : T.faces) areaT += (T.positions[t[1]] - T.positions[t[0]]).cross(T.positions[t[2]] - T.positions[t[0]]).norm();
   const double areaScale = areaS > 0 && areaT > 0 ? areaT / areaS : 1.0;
-  std::vector<std::vector<int>> facesOf(nv), nbr(nv);
-  for (int f = 0; f < nf; ++f)
-    for (int k = 0; k < 3; ++k) {
-      facesOf[S.faces[f][k]].push_back(f);
-      nbr[S.faces[f][k]].push_back(S.faces[f][(k + 1) % 3]);
-      nbr[S.faces[f][k]].push_back(S.faces[f][(k + 2) % 3]);
-    }
-  for (auto& n : nbr) {
-    std::sort(n.begin(), n.end());
-    n.erase(std::unique(n.begin(), n.end()), n.end());
-  }
+  const Stars stars(S);
+  const std::vector<std::vector<int>>&facesOf = stars.facesOf, &nbr = stars.nbr;
   auto movable = [&](int v) { return !facesOf[v].empty() && onTarget[v].face >= 0 && !(v < (int)fixed.size() && fixed[v]); };
 
   // Face f's image with vertex v (optionally) at (x, on face g): bad (flipped or degenerate)
@@ -313,19 +344,8 @@ MapUntangleResult untangleOnce(const IndexedMesh& S, const IndexedMesh& T, const
     Vec3 u = Vec3::Zero();
     for (int w : nbr[v]) u += image[w];
     out.push_back(u / static_cast<double>(nbr[v].size()));
-    Vec3 m = Vec3::Zero();
-    double ws = 0;
-    for (int f : facesOf[v]) {
-      const auto& t = S.faces[f];
-      const int k = t[0] == v ? 0 : t[1] == v ? 1 : 2;
-      const int a = t[(k + 1) % 3], b = t[(k + 2) % 3];
-      const Vec3 ea = S.positions[a] - S.positions[v], eb = S.positions[b] - S.positions[v];
-      const double tn = std::tan(0.5 * std::atan2(ea.cross(eb).norm(), ea.dot(eb)));
-      const double wa = tn / std::max(ea.norm(), 1e-300), wb = tn / std::max(eb.norm(), 1e-300);
-      m += wa * image[a] + wb * image[b];
-      ws += wa + wb;
-    }
-    if (ws > 0) out.push_back(m / ws);
+    Vec3 m;
+    if (meanValueAverage(S, facesOf[v], v, image, m)) out.push_back(m);
     return out;
   };
   auto apply = [&](int v, const FacePoint& fp) {
@@ -618,23 +638,9 @@ int polishMap(const IndexedMesh& S, const IndexedMesh& T, const std::vector<char
   const int nv = S.vertexCount(), nf = S.faceCount();
   const SurfaceWalker walker(T);
   const std::vector<Vec3>& normal = walker.normals();
-  double diag2 = 0;
-  {
-    Vec3 lo = Vec3::Constant(1e300), hi = -lo;
-    for (const Vec3& p : T.positions) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
-    diag2 = (hi - lo).squaredNorm();
-  }
-  std::vector<std::vector<int>> facesOf(nv), nbr(nv);
-  for (int f = 0; f < nf; ++f)
-    for (int k = 0; k < 3; ++k) {
-      facesOf[S.faces[f][k]].push_back(f);
-      nbr[S.faces[f][k]].push_back(S.faces[f][(k + 1) % 3]);
-      nbr[S.faces[f][k]].push_back(S.faces[f][(k + 2) % 3]);
-    }
-  for (auto& n : nbr) {
-    std::sort(n.begin(), n.end());
-    n.erase(std::unique(n.begin(), n.end()), n.end());
-  }
+  const double diag2 = boxDiagonal2(T.positions);
+  const Stars stars(S);
+  const std::vector<std::vector<int>>&facesOf = stars.facesOf, &nbr = stars.nbr;
   std::vector<double> sourceArea(nf);
   for (int f = 0; f < nf; ++f) {
     const auto& t = S.faces[f];
@@ -719,19 +725,9 @@ int polishMap(const IndexedMesh& S, const IndexedMesh& T, const std::vector<char
       };
       ++swept;
       // Half way to the mean-value average of the neighbours' images (the source's weights).
-      Vec3 m = Vec3::Zero();
-      double ws = 0;
-      for (int f : facesOf[v]) {
-        const auto& t = S.faces[f];
-        const int k = t[0] == v ? 0 : t[1] == v ? 1 : 2;
-        const int a = t[(k + 1) % 3], b = t[(k + 2) % 3];
-        const Vec3 ea = S.positions[a] - S.positions[v], eb = S.positions[b] - S.positions[v];
-        const double tn = std::tan(0.5 * std::atan2(ea.cross(eb).norm(), ea.dot(eb)));
-        const double wa = tn / std::max(ea.norm(), 1e-300), wb = tn / std::max(eb.norm(), 1e-300);
-        m += wa * image[a] + wb * image[b];
-        ws += wa + wb;
-      }
-      if (ws > 0 && accept(walker.walk(onTarget[v], 0.5 * (m / ws - image[v])))) continue;
+      Vec3 m;
+      if (meanValueAverage(S, facesOf[v], v, image, m) && accept(walker.walk(onTarget[v], 0.5 * (m - image[v]))))
+        continue;
       // The bisector of both metrics' steepest descents, by central differences on the surface.
       double len = 0;
       for (int w : nbr[v]) len += (image[w] - image[v]).norm();
@@ -768,18 +764,84 @@ int polishMap(const IndexedMesh& S, const IndexedMesh& T, const std::vector<char
   return moves;
 }
 
+/// Lays the disk of `rings` source rings round the fixed vertex a out anew round a's image: the
+/// source's disk flattened into a's tangent plane (directions by angle about a's normal,
+/// distances as they are), scaled to the present mean distance of a's neighbours, turned to
+/// fit the ring just beyond the disk, and put on the target by straight walks from a's image
+/// (other fixed vertices in the disk stay). False
+/// (nothing moved) when the disk holds an unmapped vertex.
+bool reembedStar(const IndexedMesh& S, const Stars& stars, const SurfaceWalker& walker, const std::vector<char>& fixed,
+                 int a, int rings, std::vector<FacePoint>& onTarget, std::vector<Vec3>& image) {
+  if (stars.facesOf[a].empty() || onTarget[a].face < 0) return false;
+  // The disk and the ring just beyond it (`beyond`), which stays and decides the turn.
+  std::unordered_map<int, int> dist{{a, 0}};
+  std::vector<int> disk{a}, beyond;
+  for (size_t i = 0; i < disk.size(); ++i) {
+    const int d = dist.at(disk[i]);
+    for (int w : stars.nbr[disk[i]]) {
+      if (!dist.emplace(w, d + 1).second) continue;
+      if (d + 1 <= rings) disk.push_back(w);
+      else beyond.push_back(w);
+    }
+  }
+  for (size_t i = 1; i < disk.size(); ++i)
+    if (onTarget[disk[i]].face < 0) return false;
+  // The source's tangent frame at a (area-weighted normal of its triangles).
+  Vec3 ns = Vec3::Zero();
+  for (int f : stars.facesOf[a]) {
+    const auto& t = S.faces[f];
+    ns += (S.positions[t[1]] - S.positions[t[0]]).cross(S.positions[t[2]] - S.positions[t[0]]);
+  }
+  if (!(ns.norm() > 0)) return false;
+  ns.normalize();
+  const Vec3 sx = (std::abs(ns.x()) < 0.9 ? Vec3::UnitX() : Vec3::UnitY()).cross(ns).normalized(), sy = ns.cross(sx);
+  const Vec3& n = walker.normals()[onTarget[a].face];
+  const Vec3 ax = (std::abs(n.x()) < 0.9 ? Vec3::UnitX() : Vec3::UnitY()).cross(n).normalized(), ay = n.cross(ax);
+  double srcMean = 0, imgMean = 0;
+  int ring1 = 0;
+  for (int w : stars.nbr[a]) srcMean += (S.positions[w] - S.positions[a]).norm(), imgMean += (image[w] - image[a]).norm(), ++ring1;
+  if (!(ring1 > 0 && srcMean > 0 && imgMean > 0)) return false;
+  const double scale = imgMean / srcMean;
+  // The turn that fits the images of the ring beyond the disk best (circular mean of the
+  // differences of the angles about a): those stay, and the disk must join them.
+  auto sourceAngle = [&](int w) {
+    const Vec3 d = S.positions[w] - S.positions[a];
+    return std::atan2(d.dot(sy), d.dot(sx));
+  };
+  double c = 0, sn = 0;
+  for (int w : beyond.empty() ? stars.nbr[a] : beyond) {
+    if (onTarget[w].face < 0) continue;
+    const Vec3 d = image[w] - image[a];
+    const double phi = std::atan2(d.dot(ay), d.dot(ax)) - sourceAngle(w);
+    c += std::cos(phi), sn += std::sin(phi);
+  }
+  const double offset = std::atan2(sn, c);
+  for (size_t i = 1; i < disk.size(); ++i) {
+    const int w = disk[i];
+    if (w < (int)fixed.size() && fixed[w]) continue;  // another anchor stays
+    const Vec3 d = S.positions[w] - S.positions[a];
+    const double r = (d - ns * ns.dot(d)).norm() * scale, angle = sourceAngle(w) + offset;
+    onTarget[w] = walker.walk(onTarget[a], r * (std::cos(angle) * ax + std::sin(angle) * ay));
+    image[w] = walker.point(onTarget[w]);
+  }
+  return true;
+}
+
 }  // namespace
+
+bool relayAnchorDisk(const IndexedMesh& source, const IndexedMesh& target, const std::vector<char>& fixed, int anchor,
+                     int rings, std::vector<FacePoint>& onTarget, std::vector<Vec3>& image) {
+  if (anchor < 0 || anchor >= source.vertexCount() || rings < 1 || onTarget.size() != image.size() ||
+      static_cast<int>(image.size()) != source.vertexCount())
+    return false;
+  return reembedStar(source, Stars(source), SurfaceWalker(target), fixed, anchor, rings, onTarget, image);
+}
 
 MapUntangleResult untangleCrossMap(const IndexedMesh& S, const IndexedMesh& T, const std::vector<char>& fixed,
                                    std::vector<FacePoint>& onTarget, std::vector<Vec3>& image,
                                    const MapUntangleOptions& options) {
   const TargetNormals normals(T);
-  double diag2 = 0;
-  {
-    Vec3 lo = Vec3::Constant(1e300), hi = -lo;
-    for (const Vec3& p : T.positions) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
-    diag2 = (hi - lo).squaredNorm();
-  }
+  const double diag2 = boxDiagonal2(T.positions);
   // Flipped triangles as the metrics count them (degenerate ones apart).
   auto flips = [&](const std::vector<FacePoint>& on, const std::vector<Vec3>& x) {
     int n = 0;
@@ -819,8 +881,41 @@ MapUntangleResult untangleCrossMap(const IndexedMesh& S, const IndexedMesh& T, c
       r.attempts = t.attempts;
     }
   }
-  // 5. The polish, once, on the map kept: it never turns a triangle bad, so the flip count
-  //    cannot grow (it is counted again all the same).
+  // Flips left next to an anchor: where the composed map folds the anchor's star (its
+  // neighbours' images in a wedge on one side of it, as where the two layouts meet the anchor at
+  // corner angles far apart), no move of one neighbour undoes it, and relaxations with the
+  // anchor fixed inside keep the wedge. The untangling is run again from the kept map with the
+  // anchor's neighbours laid out round it anew (reembedStar), kept when fewer flips are left.
+  if (r.flippedAfter > 0 && !options.anchorRestartRings.empty()) {
+    const SurfaceWalker walker(T);
+    const Stars stars(S);
+    std::vector<int> anchors;
+    for (const auto& t : S.faces) {
+      if (onTarget[t[0]].face < 0 || onTarget[t[1]].face < 0 || onTarget[t[2]].face < 0) continue;
+      const Vec3 &x0 = image[t[0]], &x1 = image[t[1]], &x2 = image[t[2]];
+      if (0.5 * (x1 - x0).cross(x2 - x0).norm() <= 1e-12 * diag2) continue;
+      if (!normals.flipped(x0, x1, x2, onTarget[t[0]], onTarget[t[1]], onTarget[t[2]])) continue;
+      for (int v : t)
+        if (v < (int)fixed.size() && fixed[v]) anchors.push_back(v);
+    }
+    std::sort(anchors.begin(), anchors.end());
+    anchors.erase(std::unique(anchors.begin(), anchors.end()), anchors.end());
+    for (int a : anchors)
+      for (const int rings : options.anchorRestartRings) {
+        if (r.flippedAfter == 0) break;
+        std::vector<FacePoint> on = onTarget;
+        std::vector<Vec3> x = image;
+        if (!reembedStar(S, stars, walker, fixed, a, rings, on, x)) continue;
+        const MapUntangleResult t = untangleOnce(S, T, fixed, on, x, options);
+        ++r.attempts;
+        const int left = flips(on, x);
+        if (left >= r.flippedAfter) continue;
+        r.flippedAfter = left, r.moves += t.moves, r.degenerateAfter = t.degenerateAfter;
+        onTarget = std::move(on), image = std::move(x);
+      }
+  }
+  // The polish, once, on the map kept: it never turns a triangle bad, so the flip count cannot
+  // grow (it is counted again all the same).
   r.moves += polishMap(S, T, fixed, onTarget, image, options);
   r.flippedAfter = flips(onTarget, image);
   r.movedVertices = 0;

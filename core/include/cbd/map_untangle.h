@@ -26,7 +26,9 @@
 ///    each attempt kept only if E_L2 grows by at most `maxStretchGrowth`;
 /// 5. if flips are left, stages 1-4 again from the composed map with the bounds of
 ///    `retryDistortions`, keeping the best;
-/// 6. on the map kept, up to `polishSweeps` sweeps of single-vertex moves over the whole map,
+/// 6. if flips next to anchors are left, stages 1-4 once more per such anchor from the map
+///    kept, a disk round the anchor first laid out anew (`anchorRestartRings`);
+/// 7. on the map kept, up to `polishSweeps` sweeps of single-vertex moves over the whole map,
 ///    each kept only when it raises neither E_ang nor E_L2, lowers one of them, and turns no
 ///    triangle bad (so the flip count cannot grow); stops when a sweep lowers neither metric by
 ///    `polishTolerance`.
@@ -75,6 +77,12 @@ struct MapUntangleOptions {
   /// fewest flips, then the lowest E_L2, is kept (the outcome of the greedy local moves
   /// depends on the bound in no monotone way). Empty: one run.
   std::vector<double> retryDistortions = {5.0, 3.0, 7.0};
+  /// When flips next to an anchor survive that, the untangling once more from the map kept,
+  /// per such anchor and per entry here, with the disk of that many source rings round the
+  /// anchor first laid out anew (the source's disk flattened round the anchor's image): a star
+  /// the composed map folds into a wedge gives way to no local move. A run is kept when it
+  /// leaves fewer flips. Empty: none.
+  std::vector<int> anchorRestartRings = {2, 3, 4};
 };
 
 /// What `untangleCrossMap` did.
@@ -120,6 +128,15 @@ bool imageFlipped(const Vec3& i0, const Vec3& i1, const Vec3& i2, const std::vec
 
 /// Unit normals of the faces of `mesh` (zero for a degenerate face).
 std::vector<Vec3> faceNormals(const IndexedMesh& mesh);
+
+/// The restart of `anchorRestartRings`: lays the disk of `rings` source rings round `anchor` out
+/// anew round the anchor's image (the source's disk flattened into the anchor's tangent plane,
+/// scaled to the present mean distance of its neighbours' images, turned to fit the images of the
+/// ring just beyond the disk, put on the target by straight walks from the anchor's image);
+/// fixed vertices in the disk stay. False (nothing moved) on an
+/// index out of range, or a disk holding an unmapped vertex.
+bool relayAnchorDisk(const IndexedMesh& source, const IndexedMesh& target, const std::vector<char>& fixed, int anchor,
+                     int rings, std::vector<FacePoint>& onTarget, std::vector<Vec3>& image);
 
 /// Move the images of source vertices over `target` until no triangle of M_st is flipped.
 /// @param[in] source       the source surface (connectivity of M_st)
