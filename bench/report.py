@@ -196,10 +196,11 @@ Layout = Voronoi clusters + source layout + target layout (greedy: all-pairs pat
 error + completion + flipping, both surfaces); straightening is timed apart. Total adds the
 straightening, the patch parameterizations, the composition, the untangling of M_st and M_ts,
 and the metrics. Flipped counts M_st's triangles facing against the target surface after
-untangling (the same untangling for every method). "Composed" is the map before untangling:
-what the base domains and their patch maps give by themselves, free of the untangling (whose
-outcome, on a few hundred folded triangles, moved E_ang by up to 0.1 on single pairs when we
-changed its bounds a little). E_L2 is Sander et al.'s L2 stretch normalised so that 1 is
+untangling (the same untangling for every method, `core/include/cbd/map_untangle.h`), whose
+last stage polishes the whole map: it moves vertices across patch boundaries towards a local
+minimum of both metrics, so the final numbers keep the base domain only as a starting point.
+"Composed" is the map before untangling: what the base domains and their patch maps give by
+themselves. E_L2 is Sander et al.'s L2 stretch normalised so that 1 is
 optimal (the issue's definition); E_ang is the area-weighted (σ1/σ2 + σ2/σ1)/2 − 1 (0 optimal).
 
 ![E_ang](results/plots/e_ang.png) ![E_L2](results/plots/e_l2.png)
