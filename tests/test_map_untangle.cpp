@@ -31,6 +31,17 @@ Vec3 pointOf(const IndexedMesh& m, const FacePoint& p) {
   return p.bary[0] * m.positions[t[0]] + p.bary[1] * m.positions[t[1]] + p.bary[2] * m.positions[t[2]];
 }
 
+/// A bumpy icosphere of the given subdivision level, its identity map, and every `anchorEvery`-th
+/// vertex fixed.
+void bumpyIdentity(int level, int anchorEvery, IndexedMesh& m, std::vector<FacePoint>& on, std::vector<Vec3>& image,
+                   std::vector<char>& fixed) {
+  m = fx::icosphere(level);
+  for (auto& p : m.positions) p *= 1.0 + 0.1 * std::sin(5 * p.x()) * std::cos(4 * p.y());
+  identityMap(m, on, image);
+  fixed.assign(m.vertexCount(), 0);
+  for (int v = 0; v < m.vertexCount(); v += anchorEvery) fixed[v] = 1;
+}
+
 /// Vertices within `rings` edges of v.
 std::vector<int> ringDistance(const IndexedMesh& m, int v) {
   std::vector<std::vector<int>> nbr(m.vertexCount());
@@ -134,13 +145,11 @@ TEST(MapUntangle, IdentityOfASpikyMeshHasNoFlipWhateverFaceHoldsEachVertex) {
 TEST(MapUntangle, FoldedVerticesAreUntangledOnTheSurfaceWithAnchorsFixed) {
   // The identity of a bumpy sphere, with a few vertices thrown across their neighbours: their
   // triangles fold over. Anchors (every 7th vertex) must stay where they are.
-  IndexedMesh m = fx::icosphere(4);
-  for (auto& p : m.positions) p *= 1.0 + 0.1 * std::sin(5 * p.x()) * std::cos(4 * p.y());
+  IndexedMesh m;
   std::vector<FacePoint> on;
   std::vector<Vec3> image;
-  identityMap(m, on, image);
-  std::vector<char> fixed(m.vertexCount(), 0);
-  for (int v = 0; v < m.vertexCount(); v += 7) fixed[v] = 1;
+  std::vector<char> fixed;
+  bumpyIdentity(4, 7, m, on, image, fixed);
   const std::vector<int> thrown = {10, 200, 1500};
   for (int v : thrown) {
     ASSERT_FALSE(fixed[v]);
@@ -198,13 +207,11 @@ TEST(MapUntangle, PolishLowersBothMetricsAndAddsNoFlip) {
   // (a jittered map on the surface: distorted, not folded), plus one vertex thrown across its
   // neighbours so that there is a flip to untangle. With the polish, E_ang must fall to a tenth of
   // the unpolished untangling's, E_L2 must not rise, and no flip may come back.
-  IndexedMesh m = fx::icosphere(3);
-  for (auto& p : m.positions) p *= 1.0 + 0.1 * std::sin(5 * p.x()) * std::cos(4 * p.y());
+  IndexedMesh m;
   std::vector<FacePoint> on;
   std::vector<Vec3> image;
-  identityMap(m, on, image);
-  std::vector<char> fixed(m.vertexCount(), 0);
-  for (int v = 0; v < m.vertexCount(); v += 9) fixed[v] = 1;
+  std::vector<char> fixed;
+  bumpyIdentity(3, 9, m, on, image, fixed);
   for (int v = 0; v < m.vertexCount(); ++v) {
     if (fixed[v]) continue;
     const auto& t = m.faces[on[v].face];

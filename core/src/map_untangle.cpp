@@ -65,6 +65,19 @@ bool meanValueAverage(const IndexedMesh& S, const std::vector<int>& facesOfV, in
   return true;
 }
 
+/// The mean length of the edges from v's image to its neighbours' images.
+double meanImageEdge(const std::vector<int>& nbrOfV, int v, const std::vector<Vec3>& image) {
+  double len = 0;
+  for (int w : nbrOfV) len += (image[w] - image[v]).norm();
+  return len / static_cast<double>(nbrOfV.size());
+}
+
+/// An orthonormal pair spanning the plane normal to the unit vector n.
+void tangentFrame(const Vec3& n, Vec3& x, Vec3& y) {
+  x = (std::abs(n.x()) < 0.9 ? Vec3::UnitX() : Vec3::UnitY()).cross(n).normalized();
+  y = n.cross(x);
+}
+
 /// The summed unit normals of the target faces under the three images of a face.
 Vec3 targetNormalSum(const std::vector<Vec3>& normal, int f0, int f1, int f2) {
   Vec3 nt = Vec3::Zero();
@@ -455,11 +468,9 @@ MapUntangleResult untangleOnce(const IndexedMesh& S, const IndexedMesh& T, const
         for (const Vec3& goal : goals)
           for (double step : {1.0, 0.5, 0.25, 0.125, 1.5}) tryStep(step * (goal - image[v]));
         // A ring of directions in the tangent plane, at fractions of the image edge length.
-        double len = 0;
-        for (int w : nbr[v]) len += (image[w] - image[v]).norm();
-        len /= static_cast<double>(nbr[v].size());
-        const Vec3& n = normal[onTarget[v].face];
-        const Vec3 ax = (std::abs(n.x()) < 0.9 ? Vec3::UnitX() : Vec3::UnitY()).cross(n).normalized(), ay = n.cross(ax);
+        const double len = meanImageEdge(nbr[v], v, image);
+        Vec3 ax, ay;
+        tangentFrame(normal[onTarget[v].face], ax, ay);
         for (double radius : {0.1, 0.3, 0.6, 1.0, 2.0})
           for (int k = 0; k < 12; ++k) {
             const double a = 2.0 * M_PI * k / 12.0;
@@ -572,12 +583,10 @@ MapUntangleResult untangleOnce(const IndexedMesh& S, const IndexedMesh& T, const
         delta = dmin < eps ? std::sqrt(eps * (eps - dmin)) : 0.0;
         for (int v : region) {
           const double e0 = vertexEnergy(v, image[v], onTarget[v].face);
-          double len = 0;
-          for (int w : nbr[v]) len += (image[w] - image[v]).norm();
-          len /= static_cast<double>(nbr[v].size());
+          const double len = meanImageEdge(nbr[v], v, image);
           if (!(len > 0)) continue;
-          const Vec3& n = normal[onTarget[v].face];
-          const Vec3 ax = (std::abs(n.x()) < 0.9 ? Vec3::UnitX() : Vec3::UnitY()).cross(n).normalized(), ay = n.cross(ax);
+          Vec3 ax, ay;
+          tangentFrame(normal[onTarget[v].face], ax, ay);
           const double hstep = 1e-4 * len;
           auto along = [&](const Vec3& d) {
             const FacePoint fp = walker.walk(onTarget[v], d);
@@ -729,12 +738,10 @@ int polishMap(const IndexedMesh& S, const IndexedMesh& T, const std::vector<char
       if (meanValueAverage(S, facesOf[v], v, image, m) && accept(walker.walk(onTarget[v], 0.5 * (m - image[v]))))
         continue;
       // The bisector of both metrics' steepest descents, by central differences on the surface.
-      double len = 0;
-      for (int w : nbr[v]) len += (image[w] - image[v]).norm();
-      len /= static_cast<double>(nbr[v].size());
+      const double len = meanImageEdge(nbr[v], v, image);
       if (!(len > 0)) continue;
-      const Vec3& n = normal[onTarget[v].face];
-      const Vec3 ax = (std::abs(n.x()) < 0.9 ? Vec3::UnitX() : Vec3::UnitY()).cross(n).normalized(), ay = n.cross(ax);
+      Vec3 ax, ay;
+      tangentFrame(normal[onTarget[v].face], ax, ay);
       const double h = 1e-4 * len;
       Vec3 gAng = Vec3::Zero(), gL2 = Vec3::Zero();
       for (const Vec3& axis : {ax, ay}) {
@@ -794,9 +801,9 @@ bool reembedStar(const IndexedMesh& S, const Stars& stars, const SurfaceWalker& 
   }
   if (!(ns.norm() > 0)) return false;
   ns.normalize();
-  const Vec3 sx = (std::abs(ns.x()) < 0.9 ? Vec3::UnitX() : Vec3::UnitY()).cross(ns).normalized(), sy = ns.cross(sx);
-  const Vec3& n = walker.normals()[onTarget[a].face];
-  const Vec3 ax = (std::abs(n.x()) < 0.9 ? Vec3::UnitX() : Vec3::UnitY()).cross(n).normalized(), ay = n.cross(ax);
+  Vec3 sx, sy, ax, ay;
+  tangentFrame(ns, sx, sy);
+  tangentFrame(walker.normals()[onTarget[a].face], ax, ay);
   double srcMean = 0, imgMean = 0;
   int ring1 = 0;
   for (int w : stars.nbr[a]) srcMean += (S.positions[w] - S.positions[a]).norm(), imgMean += (image[w] - image[a]).norm(), ++ring1;
