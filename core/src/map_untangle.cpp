@@ -277,12 +277,11 @@ double l2StretchOf(const IndexedMesh& S, const std::vector<Vec3>& image) {
 /// Internally a triangle is bad when it faces
 /// against the normals of the target faces its corners were located in (`imageFlipped`): at a
 /// corner on a target edge or vertex that is stricter than the metrics' test, never looser.
-MapUntangleResult untangleOnce(const IndexedMesh& S, const IndexedMesh& T, const std::vector<char>& fixed,
-                               std::vector<FacePoint>& onTarget, std::vector<Vec3>& image,
-                               const MapUntangleOptions& options) {
+MapUntangleResult untangleOnce(const IndexedMesh& S, const IndexedMesh& T, const SurfaceWalker& walker,
+                               const Stars& stars, const std::vector<char>& fixed, std::vector<FacePoint>& onTarget,
+                               std::vector<Vec3>& image, const MapUntangleOptions& options) {
   MapUntangleResult r;
   const int nv = S.vertexCount(), nf = S.faceCount();
-  const SurfaceWalker walker(T);
   const std::vector<Vec3>& normal = walker.normals();
   const double diag2 = boxDiagonal2(T.positions);
   // Target area per unit of source area, over the whole surfaces.
@@ -290,7 +289,6 @@ MapUntangleResult untangleOnce(const IndexedMesh& S, const IndexedMesh& T, const
   for (const auto& t : S.faces) areaS += (S.positions[t[1]] - S.positions[t[0]]).cross(S.positions[t[2]] - S.positions[t[0]]).norm();
   for (const auto& t : T.faces) areaT += (T.positions[t[1]] - T.positions[t[0]]).cross(T.positions[t[2]] - T.positions[t[0]]).norm();
   const double areaScale = areaS > 0 && areaT > 0 ? areaT / areaS : 1.0;
-  const Stars stars(S);
   const std::vector<std::vector<int>>&facesOf = stars.facesOf, &nbr = stars.nbr;
   auto movable = [&](int v) { return !facesOf[v].empty() && onTarget[v].face >= 0 && !(v < (int)fixed.size() && fixed[v]); };
 
@@ -641,14 +639,13 @@ MapUntangleResult untangleOnce(const IndexedMesh& S, const IndexedMesh& T, const
 /// bisector of the two metrics' steepest descents in the tangent plane (a direction that lowers
 /// both while they do not pull opposite ways). Only vertices next to a move are visited again.
 /// Returns the number of accepted moves.
-int polishMap(const IndexedMesh& S, const IndexedMesh& T, const std::vector<char>& fixed,
-              std::vector<FacePoint>& onTarget, std::vector<Vec3>& image, const MapUntangleOptions& options) {
+int polishMap(const IndexedMesh& S, const IndexedMesh& T, const SurfaceWalker& walker, const Stars& stars,
+              const std::vector<char>& fixed, std::vector<FacePoint>& onTarget, std::vector<Vec3>& image,
+              const MapUntangleOptions& options) {
   if (options.polishSweeps <= 0) return 0;
   const int nv = S.vertexCount(), nf = S.faceCount();
-  const SurfaceWalker walker(T);
   const std::vector<Vec3>& normal = walker.normals();
   const double diag2 = boxDiagonal2(T.positions);
-  const Stars stars(S);
   const std::vector<std::vector<int>>&facesOf = stars.facesOf, &nbr = stars.nbr;
   std::vector<double> sourceArea(nf);
   for (int f = 0; f < nf; ++f) {
@@ -863,7 +860,10 @@ MapUntangleResult untangleCrossMap(const IndexedMesh& S, const IndexedMesh& T, c
   if (before == 0) return MapUntangleResult{};  // nothing to untangle: the map is left as it is
   const std::vector<FacePoint> startOn = onTarget;
   const std::vector<Vec3> startImage = image;
-  MapUntangleResult r = untangleOnce(S, T, fixed, onTarget, image, options);
+  // Built once for every run below.
+  const SurfaceWalker walker(T);
+  const Stars stars(S);
+  MapUntangleResult r = untangleOnce(S, T, walker, stars, fixed, onTarget, image, options);
   r.flippedBefore = before;
   r.flippedAfter = flips(onTarget, image);
   r.attempts = 1;
@@ -876,7 +876,7 @@ MapUntangleResult untangleCrossMap(const IndexedMesh& S, const IndexedMesh& T, c
     std::vector<Vec3> x = startImage;
     MapUntangleOptions o = options;
     o.maxDistortion = bound;
-    MapUntangleResult t = untangleOnce(S, T, fixed, on, x, o);
+    MapUntangleResult t = untangleOnce(S, T, walker, stars, fixed, on, x, o);
     t.flippedBefore = before;
     t.flippedAfter = flips(on, x);
     t.attempts = r.attempts + 1;
@@ -894,8 +894,6 @@ MapUntangleResult untangleCrossMap(const IndexedMesh& S, const IndexedMesh& T, c
   // anchor fixed inside keep the wedge. The untangling is run again from the kept map with the
   // anchor's neighbours laid out round it anew (reembedStar), kept when fewer flips are left.
   if (r.flippedAfter > 0 && !options.anchorRestartRings.empty()) {
-    const SurfaceWalker walker(T);
-    const Stars stars(S);
     std::vector<int> anchors;
     for (const auto& t : S.faces) {
       if (onTarget[t[0]].face < 0 || onTarget[t[1]].face < 0 || onTarget[t[2]].face < 0) continue;
@@ -913,7 +911,7 @@ MapUntangleResult untangleCrossMap(const IndexedMesh& S, const IndexedMesh& T, c
         std::vector<FacePoint> on = onTarget;
         std::vector<Vec3> x = image;
         if (!reembedStar(S, stars, walker, fixed, a, rings, on, x)) continue;
-        const MapUntangleResult t = untangleOnce(S, T, fixed, on, x, options);
+        const MapUntangleResult t = untangleOnce(S, T, walker, stars, fixed, on, x, options);
         ++r.attempts;
         const int left = flips(on, x);
         if (left >= r.flippedAfter) continue;
@@ -923,7 +921,7 @@ MapUntangleResult untangleCrossMap(const IndexedMesh& S, const IndexedMesh& T, c
   }
   // The polish, once, on the map kept: it never turns a triangle bad, so the flip count cannot
   // grow (it is counted again all the same).
-  r.moves += polishMap(S, T, fixed, onTarget, image, options);
+  r.moves += polishMap(S, T, walker, stars, fixed, onTarget, image, options);
   r.flippedAfter = flips(onTarget, image);
   r.movedVertices = 0;
   for (size_t v = 0; v < image.size(); ++v) r.movedVertices += image[v] != startImage[v];
