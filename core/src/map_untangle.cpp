@@ -632,13 +632,14 @@ MapUntangleResult untangleOnce(const IndexedMesh& S, const IndexedMesh& T, const
 }
 
 /// Stage 5: Gauss-Seidel sweeps that move single images along the target surface so that
-/// neither the numerator of E_ang (sum of source area x angle distortion) nor E_L2 (sum of image
-/// area x |J|^2 / 2 over the squared image area) grows, one of them falls, and no triangle of
-/// the vertex turns bad (flipped or degenerate by the untangling's own test). Candidates: half
-/// way to the mean-value average of the neighbours' images, then a line search along the
-/// bisector of the two metrics' steepest descents in the tangent plane (a direction that lowers
-/// both while they do not pull opposite ways). Only vertices next to a move are visited again.
-/// Returns the number of accepted moves.
+/// E_ang x E_L2^w falls (`polishProduct`, w = `polishStretchWeight`) or, else, neither the
+/// numerator of E_ang (sum of source area x angle distortion) nor E_L2 (sum of image area x
+/// |J|^2 / 2 over the squared image area) grows and one falls; and no triangle of the vertex
+/// turns bad (flipped or degenerate by the untangling's own test) nor, if it was bad already,
+/// flipped by the metrics' test. Candidates: half way to the mean-value average of the
+/// neighbours' images, then a line search in the tangent plane along the steepest descent of
+/// that product (else along the bisector of the two metrics' steepest descents). Only vertices
+/// next to a move are visited again. Returns the number of accepted moves.
 int polishMap(const IndexedMesh& S, const IndexedMesh& T, const SurfaceWalker& walker, const Stars& stars,
               const std::vector<char>& fixed, std::vector<FacePoint>& onTarget, std::vector<Vec3>& image,
               const MapUntangleOptions& options) {
@@ -653,28 +654,33 @@ int polishMap(const IndexedMesh& S, const IndexedMesh& T, const SurfaceWalker& w
     sourceArea[f] = 0.5 * (S.positions[t[1]] - S.positions[t[0]]).cross(S.positions[t[2]] - S.positions[t[0]]).norm();
   }
   // One triangle's share of the metrics with vertex v (optionally) at x on face g.
+  // `bad` is the untangling's strict test; a triangle that fails it already may stay so, but
+  // must not turn flipped by the metrics' looser one (`flipped`).
+  const TargetNormals targetNormals(T);
   struct Terms {
-    bool bad = false;
+    bool bad = false, flipped = false;
     double at = 0, l2 = 0, ang = 0;
   };
-  auto terms = [&](int f, int v, const Vec3& x, int g) {
+  auto terms = [&](int f, int v, const Vec3& x, const FacePoint* at) {
     const auto& t = S.faces[f];
     Vec3 p[3];
-    int on[3];
-    for (int k = 0; k < 3; ++k) p[k] = t[k] == v ? x : image[t[k]], on[k] = t[k] == v ? g : onTarget[t[k]].face;
+    const FacePoint* on[3];
+    for (int k = 0; k < 3; ++k) p[k] = t[k] == v ? x : image[t[k]], on[k] = t[k] == v ? at : &onTarget[t[k]];
     Terms e;
     const Vec3 c = (p[1] - p[0]).cross(p[2] - p[0]);
     e.at = 0.5 * c.norm();
     double frob = 0;
     const double a = angleDistortion(S.positions[t[0]], S.positions[t[1]], S.positions[t[2]], p[0], p[1], p[2], &frob);
-    e.bad = e.at <= 1e-12 * diag2 || frob >= 1e12 || imageFlipped(p[0], p[1], p[2], normal, on[0], on[1], on[2]);
+    e.bad = e.at <= 1e-12 * diag2 || frob >= 1e12 ||
+            imageFlipped(p[0], p[1], p[2], normal, on[0]->face, on[1]->face, on[2]->face);
+    e.flipped = e.bad && targetNormals.flipped(p[0], p[1], p[2], *on[0], *on[1], *on[2]);
     e.l2 = e.at * 0.5 * frob;
     e.ang = sourceArea[f] * a;
     return e;
   };
   double sumAt = 0, sumL2 = 0, sumAng = 0;
   for (int f = 0; f < nf; ++f) {
-    const Terms e = terms(f, -1, Vec3::Zero(), -1);
+    const Terms e = terms(f, -1, Vec3::Zero(), nullptr);
     if (e.bad && e.at <= 1e-12 * diag2) continue;
     sumAt += e.at, sumL2 += e.l2, sumAng += e.ang;
   }
@@ -695,7 +701,7 @@ int polishMap(const IndexedMesh& S, const IndexedMesh& T, const SurfaceWalker& w
       double at0 = 0, l20 = 0, ang0 = 0;
       bool degenerate = false;
       for (int f : facesOf[v]) {
-        cur.push_back(terms(f, -1, Vec3::Zero(), -1));
+        cur.push_back(terms(f, -1, Vec3::Zero(), nullptr));
         degenerate |= cur.back().at <= 1e-12 * diag2 || cur.back().l2 >= 1e11;
         at0 += cur.back().at, l20 += cur.back().l2, ang0 += cur.back().ang;
       }
@@ -708,8 +714,8 @@ int polishMap(const IndexedMesh& S, const IndexedMesh& T, const SurfaceWalker& w
         at = 0, l2 = 0;
         ok = true;
         for (size_t i = 0; i < facesOf[v].size(); ++i) {
-          const Terms e = terms(facesOf[v][i], v, x, fp.face);
-          if (e.bad && !cur[i].bad) ok = false;
+          const Terms e = terms(facesOf[v][i], v, x, &fp);
+          if ((e.bad && !cur[i].bad) || (e.flipped && !cur[i].flipped)) ok = false;
           at += e.at, l2 += e.l2, ang += e.ang;
         }
         const double a = sumAt - at0 + at;
@@ -721,7 +727,13 @@ int polishMap(const IndexedMesh& S, const IndexedMesh& T, const SurfaceWalker& w
         bool ok = false;
         double at = 0, l2 = 0;
         const auto [ang, l2Map] = evaluate(fp, x, ok, at, l2);
-        if (!ok || ang > ang0 || l2Map > l2Now || !(ang < ang0 * (1 - 1e-12) || l2Map < l2Now * (1 - 1e-12))) return false;
+        if (!ok) return false;
+        if (options.polishProduct) {
+          const double gain = (ang - ang0) / sumAng + 0.5 * options.polishStretchWeight * (l2Map - l2Now) / l2Now;
+          if (!(gain < -1e-12)) return false;
+        } else if (ang > ang0 || l2Map > l2Now || !(ang < ang0 * (1 - 1e-12) || l2Map < l2Now * (1 - 1e-12))) {
+          return false;
+        }
         sumAt += at - at0, sumL2 += l2 - l20, sumAng += ang - ang0;
         onTarget[v] = fp, image[v] = x;
         ++moves;
@@ -753,16 +765,23 @@ int polishMap(const IndexedMesh& S, const IndexedMesh& T, const SurfaceWalker& w
         gL2 += (side[0].second - side[1].second) / (2 * h) * axis;
       }
       Vec3 dir = Vec3::Zero();
-      if (gAng.norm() > 0) dir -= gAng.normalized();
-      if (gL2.norm() > 0) dir -= gL2.normalized();
+      if (options.polishProduct) {
+        dir = -(gAng / sumAng + 0.5 * options.polishStretchWeight * gL2 / l2Now);
+      } else {
+        if (gAng.norm() > 0) dir -= gAng.normalized();
+        if (gL2.norm() > 0) dir -= gL2.normalized();
+      }
+      if (options.polishProduct && dir.norm() > 0) dir /= dir.norm();
       if (!(dir.norm() > 1e-6)) continue;
       dir.normalize();
       for (double step = 0.5 * len; step > 1e-3 * len && !done; step *= 0.5) accept(walker.walk(onTarget[v], step * dir));
     }
     active.swap(next);
     // Converged: nothing left to visit, or the sweep lowered neither metric by the tolerance.
-    if (swept == 0 || (sumAng >= angStart * (1 - options.polishTolerance) &&
-                       sumL2 / (sumAt * sumAt) >= l2Start * (1 - options.polishTolerance)))
+    const double angRatio = sumAng / angStart, l2Ratio = sumL2 / (sumAt * sumAt) / l2Start;
+    if (swept == 0 || (options.polishProduct ? angRatio * std::sqrt(l2Ratio) >= 1 - options.polishTolerance
+                                             : angRatio >= 1 - options.polishTolerance &&
+                                                   l2Ratio >= 1 - options.polishTolerance))
       break;
   }
   return moves;
@@ -905,19 +924,29 @@ MapUntangleResult untangleCrossMap(const IndexedMesh& S, const IndexedMesh& T, c
     }
     std::sort(anchors.begin(), anchors.end());
     anchors.erase(std::unique(anchors.begin(), anchors.end()), anchors.end());
-    for (int a : anchors)
+    for (int a : anchors) {
+      if (r.flippedAfter == 0) break;
+      // Every disk size from the same map; the one with the fewest flips, then the lowest E_L2.
+      const std::vector<FacePoint> keptOn = onTarget;
+      const std::vector<Vec3> keptImage = image;
+      int bestLeft = r.flippedAfter;
+      double bestRestartL2 = 0;
       for (const int rings : options.anchorRestartRings) {
-        if (r.flippedAfter == 0) break;
-        std::vector<FacePoint> on = onTarget;
-        std::vector<Vec3> x = image;
+        std::vector<FacePoint> on = keptOn;
+        std::vector<Vec3> x = keptImage;
         if (!reembedStar(S, stars, walker, fixed, a, rings, on, x)) continue;
         const MapUntangleResult t = untangleOnce(S, T, walker, stars, fixed, on, x, options);
         ++r.attempts;
         const int left = flips(on, x);
-        if (left >= r.flippedAfter) continue;
-        r.flippedAfter = left, r.moves += t.moves, r.degenerateAfter = t.degenerateAfter;
+        const double l2 = l2StretchOf(S, x);
+        const bool better = left < bestLeft || (left == bestLeft && bestLeft < r.flippedAfter && l2 < bestRestartL2);
+        if (!better) continue;
+        bestLeft = left, bestRestartL2 = l2;
+        r.moves += t.moves, r.degenerateAfter = t.degenerateAfter;
         onTarget = std::move(on), image = std::move(x);
       }
+      r.flippedAfter = bestLeft;
+    }
   }
   // The polish, once, on the map kept: it never turns a triangle bad, so the flip count cannot
   // grow (it is counted again all the same).
