@@ -21,6 +21,7 @@ table = rows(os.path.join(out, 'table.csv'))
 scal_a = [r for r in rows(os.path.join(out, 'scaling_anchors', 'scaling.csv')) if r['experiment'] == 'anchors']
 scal_s = [r for r in rows(os.path.join(out, 'scaling_size', 'scaling.csv')) if r['experiment'] == 'size']
 methods = ['greedy', 'voronoi-E1', 'voronoi-C']
+full = rows(os.path.join(out, 'scaling_size', 'full.csv'))
 
 def fit(points):
     """Least-squares exponent k of t = c * x^k over (x, t) with t > 0."""
@@ -141,6 +142,18 @@ def md_scaling(data, xcol):
         ex.append(f'{m}: t ~ {xcol}^{k:.2f}')
     return '\n'.join(lines) + '\n\nFitted exponents (least squares on log-log): ' + '; '.join(ex) + '.'
 
+def md_full():
+    if not full:
+        return '(not run)'
+    lines = ['| vertices | anchors | method | E_ang | E_L2 | flipped (before untangling) | layout s | total s | peak MB |', '|---|---|---|---|---|---|---|---|---|']
+    for r in full:
+        if r['status'] != 'ok':
+            lines.append(f"| {r['vertices']} | {r['anchors']} | {r['method']} | failed: {r['error']} | | | | | |")
+            continue
+        lines.append(f"| {r['vertices']} | {r['anchors']} | {r['method']} | {float(r['e_ang']):.4f} | {float(r['e_l2']):.4f} | "
+                     f"{r['flipped']} ({r['flipped_before_untangle']}) | {float(r['t_layout']):.1f} | {float(r['t_total']):.1f} | {float(r['peak_mb']):.0f} |")
+    return '\n'.join(lines)
+
 def machine():
     cpu = 'unknown CPU'
     try:
@@ -235,6 +248,16 @@ Voronoi method traces its target layout (for an input paired with itself it take
 adaptive edge nodes), the paper's lower bound for a layout; "layout / sweep" is the ratio.
 Memory goes to the refined half-edge meshes, the edge-node table and the Dijkstra scratch
 arrays (per node: distance, parent, stamps), all linear in the mesh size.
+
+The whole pipeline (`cbd map`'s defaults: layouts, straightening, patch parameterizations,
+untangling and polish of both maps, metrics) at the largest size, each method in its own
+process:
+
+{md_full()}
+
+Beyond the layouts, memory goes to the two patch parameterizations (a sparse LU factorisation
+of the mean-value system per patch, one per worker thread at a time), the two maps with their
+point location on the other surface, and the untangling's per-vertex stars.
 
 ## Random-anchor stress (synthetic pairs with known deformations)
 
