@@ -653,7 +653,7 @@ int polishMap(const IndexedMesh& S, const IndexedMesh& T, const SurfaceWalker& w
     const auto& t = S.faces[f];
     sourceArea[f] = 0.5 * (S.positions[t[1]] - S.positions[t[0]]).cross(S.positions[t[2]] - S.positions[t[0]]).norm();
   }
-  // One triangle's share of the metrics with vertex v (optionally) at x on face g.
+  // One triangle's share of the metrics with vertex v (optionally) at x, located at `where`.
   // `bad` is the untangling's strict test; a triangle that fails it already may stay so, but
   // must not turn flipped by the metrics' looser one (`flipped`).
   const TargetNormals targetNormals(T);
@@ -661,11 +661,11 @@ int polishMap(const IndexedMesh& S, const IndexedMesh& T, const SurfaceWalker& w
     bool bad = false, flipped = false;
     double at = 0, l2 = 0, ang = 0;
   };
-  auto terms = [&](int f, int v, const Vec3& x, const FacePoint* at) {
+  auto terms = [&](int f, int v, const Vec3& x, const FacePoint* where) {
     const auto& t = S.faces[f];
     Vec3 p[3];
     const FacePoint* on[3];
-    for (int k = 0; k < 3; ++k) p[k] = t[k] == v ? x : image[t[k]], on[k] = t[k] == v ? at : &onTarget[t[k]];
+    for (int k = 0; k < 3; ++k) p[k] = t[k] == v ? x : image[t[k]], on[k] = t[k] == v ? where : &onTarget[t[k]];
     Terms e;
     const Vec3 c = (p[1] - p[0]).cross(p[2] - p[0]);
     e.at = 0.5 * c.norm();
@@ -767,17 +767,17 @@ int polishMap(const IndexedMesh& S, const IndexedMesh& T, const SurfaceWalker& w
       Vec3 dir = Vec3::Zero();
       if (options.polishProduct) {
         dir = -(gAng / sumAng + 0.5 * options.polishStretchWeight * gL2 / l2Now);
+        if (dir.norm() > 0) dir /= dir.norm();
       } else {
         if (gAng.norm() > 0) dir -= gAng.normalized();
         if (gL2.norm() > 0) dir -= gL2.normalized();
       }
-      if (options.polishProduct && dir.norm() > 0) dir /= dir.norm();
-      if (!(dir.norm() > 1e-6)) continue;
+      if (!(dir.norm() > 1e-6)) continue;  // no descent, or the two pull opposite ways
       dir.normalize();
       for (double step = 0.5 * len; step > 1e-3 * len && !done; step *= 0.5) accept(walker.walk(onTarget[v], step * dir));
     }
     active.swap(next);
-    // Converged: nothing left to visit, or the sweep lowered neither metric by the tolerance.
+    // Converged: nothing left to visit, or the sweep gained less than the tolerance.
     const double angRatio = sumAng / angStart, l2Ratio = sumL2 / (sumAt * sumAt) / l2Start;
     if (swept == 0 || (options.polishProduct ? angRatio * std::sqrt(l2Ratio) >= 1 - options.polishTolerance
                                              : angRatio >= 1 - options.polishTolerance &&
