@@ -211,7 +211,7 @@ straightening, the patch parameterizations, the composition, the untangling of M
 and the metrics. Flipped counts M_st's triangles facing against the target surface after
 untangling (the same untangling for every method, `core/include/cbd/map_untangle.h`), whose
 last stage polishes the whole map: it moves vertices across patch boundaries towards a local
-minimum of both metrics, so the final numbers keep the base domain only as a starting point.
+minimum of E_ang × E_L2², so the final numbers keep the base domain only as a starting point.
 "Composed" is the map before untangling: what the base domains and their patch maps give by
 themselves. E_L2 is Sander et al.'s L2 stretch normalised so that 1 is
 optimal (the issue's definition); E_ang is the area-weighted (σ1/σ2 + σ2/σ1)/2 − 1 (0 optimal).
