@@ -280,16 +280,20 @@ int scaling(const std::string& meshPath, const fs::path& out, int maxLevel, cons
       return r;
     });
   };
+  // The target is the mesh turned a quarter about z (exactly: coordinates swapped): the same
+  // surface, but not the same input, so the Voronoi method traces its target layout rather
+  // than taking the source's (pipeline.h, LayoutPair::sameSurface).
+  auto turnedCopy = [](const IndexedMesh& m) {
+    IndexedMesh turned = m;
+    for (Vec3& p : turned.positions) p = Vec3(-p.y(), p.x(), p.z());
+    return turned;
+  };
   auto record = [&](const char* exp, const IndexedMesh& m, int n) {
     const std::vector<int> a = farthestPointSampling(m, n);
     const Run d = sweep(m, a);
     for (const Method& meth : methods()) {
       if (meth.name != "greedy" && meth.name != "voronoi-C") continue;  // layouts only: no straightening
-      // The target is the mesh turned a quarter about z (exactly: coordinates swapped): the same
-      // surface, but not the same input, so the Voronoi method traces its target layout rather
-      // than taking the source's (pipeline.h, LayoutPair::sameSurface).
-      IndexedMesh turned = m;
-      for (Vec3& p : turned.positions) p = Vec3(-p.y(), p.x(), p.z());
+      const IndexedMesh turned = turnedCopy(m);
       const Run r = forked([&] { return runPipeline(m, a, turned, a, euler, meth.options, true); });
       csv << exp << ',' << m.vertexCount() << ',' << n << ',' << meth.name << ',' << (r.ok ? "ok" : "failed") << ','
           << r.tVoronoi << ',' << r.tSource << ',' << r.tTarget << ',' << r.tLayout << ',' << d.tTotal << ','
@@ -313,8 +317,7 @@ int scaling(const std::string& meshPath, const fs::path& out, int maxLevel, cons
     std::ofstream full(out / "full.csv");
     full << "vertices,anchors,method,status,e_ang,e_l2,flipped,flipped_before_untangle,t_layout,t_total,peak_mb,error\n";
     const std::vector<int> a = farthestPointSampling(m, 32);
-    IndexedMesh turned = m;
-    for (Vec3& p : turned.positions) p = Vec3(-p.y(), p.x(), p.z());
+    const IndexedMesh turned = turnedCopy(m);
     for (const Method& meth : methods()) {
       if (meth.name != "greedy" && meth.name != "voronoi-C") continue;
       const Run r = forked([&] { return runPipeline(m, a, turned, a, euler, meth.options, false); });

@@ -1,6 +1,7 @@
 #include "cbd/map_untangle.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <unordered_map>
@@ -641,8 +642,8 @@ MapUntangleResult untangleOnce(const IndexedMesh& S, const IndexedMesh& T, const
 /// that product (else along the bisector of the two metrics' steepest descents). Only vertices
 /// next to a move are visited again. Returns the number of accepted moves.
 int polishMap(const IndexedMesh& S, const IndexedMesh& T, const SurfaceWalker& walker, const Stars& stars,
-              const std::vector<char>& fixed, std::vector<FacePoint>& onTarget, std::vector<Vec3>& image,
-              const MapUntangleOptions& options) {
+              const TargetNormals& targetNormals, const std::vector<char>& fixed, std::vector<FacePoint>& onTarget,
+              std::vector<Vec3>& image, const MapUntangleOptions& options) {
   if (options.polishSweeps <= 0) return 0;
   const int nv = S.vertexCount(), nf = S.faceCount();
   const std::vector<Vec3>& normal = walker.normals();
@@ -656,7 +657,6 @@ int polishMap(const IndexedMesh& S, const IndexedMesh& T, const SurfaceWalker& w
   // One triangle's share of the metrics with vertex v (optionally) at x, located at `where`.
   // `bad` is the untangling's strict test; a triangle that fails it already may stay so, but
   // must not turn flipped by the metrics' looser one (`flipped`).
-  const TargetNormals targetNormals(T);
   struct Terms {
     bool bad = false, flipped = false;
     double at = 0, l2 = 0, ang = 0;
@@ -866,13 +866,14 @@ MapUntangleResult untangleCrossMap(const IndexedMesh& S, const IndexedMesh& T, c
   const TargetNormals normals(T);
   const double diag2 = boxDiagonal2(T.positions);
   // Flipped triangles as the metrics count them (degenerate ones apart).
+  auto flippedFace = [&](const std::array<int, 3>& t, const std::vector<FacePoint>& on, const std::vector<Vec3>& x) {
+    if (on[t[0]].face < 0 || on[t[1]].face < 0 || on[t[2]].face < 0) return false;
+    if (0.5 * (x[t[1]] - x[t[0]]).cross(x[t[2]] - x[t[0]]).norm() <= 1e-12 * diag2) return false;
+    return normals.flipped(x[t[0]], x[t[1]], x[t[2]], on[t[0]], on[t[1]], on[t[2]]);
+  };
   auto flips = [&](const std::vector<FacePoint>& on, const std::vector<Vec3>& x) {
     int n = 0;
-    for (const auto& t : S.faces) {
-      if (on[t[0]].face < 0 || on[t[1]].face < 0 || on[t[2]].face < 0) continue;
-      if (0.5 * (x[t[1]] - x[t[0]]).cross(x[t[2]] - x[t[0]]).norm() <= 1e-12 * diag2) continue;
-      n += normals.flipped(x[t[0]], x[t[1]], x[t[2]], on[t[0]], on[t[1]], on[t[2]]);
-    }
+    for (const auto& t : S.faces) n += flippedFace(t, on, x);
     return n;
   };
   const int before = flips(onTarget, image);
@@ -915,10 +916,7 @@ MapUntangleResult untangleCrossMap(const IndexedMesh& S, const IndexedMesh& T, c
   if (r.flippedAfter > 0 && !options.anchorRestartRings.empty()) {
     std::vector<int> anchors;
     for (const auto& t : S.faces) {
-      if (onTarget[t[0]].face < 0 || onTarget[t[1]].face < 0 || onTarget[t[2]].face < 0) continue;
-      const Vec3 &x0 = image[t[0]], &x1 = image[t[1]], &x2 = image[t[2]];
-      if (0.5 * (x1 - x0).cross(x2 - x0).norm() <= 1e-12 * diag2) continue;
-      if (!normals.flipped(x0, x1, x2, onTarget[t[0]], onTarget[t[1]], onTarget[t[2]])) continue;
+      if (!flippedFace(t, onTarget, image)) continue;
       for (int v : t)
         if (v < (int)fixed.size() && fixed[v]) anchors.push_back(v);
     }
@@ -931,6 +929,7 @@ MapUntangleResult untangleCrossMap(const IndexedMesh& S, const IndexedMesh& T, c
       const std::vector<Vec3> keptImage = image;
       int bestLeft = r.flippedAfter;
       double bestRestartL2 = 0;
+      MapUntangleResult best;  // the untangling of the restart kept (none: `bestLeft` unchanged)
       for (const int rings : options.anchorRestartRings) {
         std::vector<FacePoint> on = keptOn;
         std::vector<Vec3> x = keptImage;
@@ -938,19 +937,19 @@ MapUntangleResult untangleCrossMap(const IndexedMesh& S, const IndexedMesh& T, c
         const MapUntangleResult t = untangleOnce(S, T, walker, stars, fixed, on, x, options);
         ++r.attempts;
         const int left = flips(on, x);
+        if (left > bestLeft || (left == bestLeft && bestLeft == r.flippedAfter)) continue;
         const double l2 = l2StretchOf(S, x);
-        const bool better = left < bestLeft || (left == bestLeft && bestLeft < r.flippedAfter && l2 < bestRestartL2);
-        if (!better) continue;
-        bestLeft = left, bestRestartL2 = l2;
-        r.moves += t.moves, r.degenerateAfter = t.degenerateAfter;
+        if (left == bestLeft && l2 >= bestRestartL2) continue;
+        bestLeft = left, bestRestartL2 = l2, best = t;
         onTarget = std::move(on), image = std::move(x);
       }
+      if (bestLeft < r.flippedAfter) r.moves += best.moves, r.degenerateAfter = best.degenerateAfter;
       r.flippedAfter = bestLeft;
     }
   }
   // The polish, once, on the map kept: it never turns a triangle bad, so the flip count cannot
   // grow (it is counted again all the same).
-  r.moves += polishMap(S, T, walker, stars, fixed, onTarget, image, options);
+  r.moves += polishMap(S, T, walker, stars, normals, fixed, onTarget, image, options);
   r.flippedAfter = flips(onTarget, image);
   r.movedVertices = 0;
   for (size_t v = 0; v < image.size(); ++v) r.movedVertices += image[v] != startImage[v];
