@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 
 #include "cbd/distortion.h"
 #include "cbd/map_untangle.h"
@@ -40,6 +41,21 @@ void bumpyIdentity(int level, int anchorEvery, IndexedMesh& m, std::vector<FaceP
   identityMap(m, on, image);
   fixed.assign(m.vertexCount(), 0);
   for (int v = 0; v < m.vertexCount(); v += anchorEvery) fixed[v] = 1;
+}
+
+/// Every free vertex's image slid into one of its faces (a jittered map on the surface:
+/// distorted, not folded).
+void jitterIntoFaces(const IndexedMesh& m, const std::vector<char>& fixed, std::vector<FacePoint>& on,
+                     std::vector<Vec3>& image) {
+  for (int v = 0; v < m.vertexCount(); ++v) {
+    if (fixed[v]) continue;
+    const auto& t = m.faces[on[v].face];
+    const int k = static_cast<int>(std::find(t.begin(), t.end(), v) - t.begin());
+    const double s = 0.25 + 0.2 * std::sin(1.7 * v);  // how far into the face, 0.05 .. 0.45
+    on[v].bary = Vec3::Constant(0.5 * s);
+    on[v].bary[k] = 1.0 - s;
+    image[v] = pointOf(m, on[v]);
+  }
 }
 
 /// Vertices within `rings` edges of v.
@@ -212,15 +228,7 @@ TEST(MapUntangle, PolishLowersBothMetricsAndAddsNoFlip) {
   std::vector<Vec3> image;
   std::vector<char> fixed;
   bumpyIdentity(3, 9, m, on, image, fixed);
-  for (int v = 0; v < m.vertexCount(); ++v) {
-    if (fixed[v]) continue;
-    const auto& t = m.faces[on[v].face];
-    const int k = static_cast<int>(std::find(t.begin(), t.end(), v) - t.begin());
-    const double s = 0.25 + 0.2 * std::sin(1.7 * v);  // how far into the face, 0.05 .. 0.45
-    on[v].bary = Vec3::Constant(0.5 * s);
-    on[v].bary[k] = 1.0 - s;
-    image[v] = pointOf(m, on[v]);
-  }
+  jitterIntoFaces(m, fixed, on, image);
   const int thrown = 100;
   ASSERT_FALSE(fixed[thrown]);
   const std::vector<int> d = ringDistance(m, thrown);
@@ -254,6 +262,42 @@ TEST(MapUntangle, PolishLowersBothMetricsAndAddsNoFlip) {
     EXPECT_GE(onPolished[v].bary.minCoeff(), -1e-12);
     EXPECT_LT((pointOf(m, onPolished[v]) - imagePolished[v]).norm(), 1e-12);
     if (fixed[v]) EXPECT_EQ(imagePolished[v], image[v]) << "anchor " << v << " moved";
+  }
+}
+
+TEST(MapUntangle, AFlipFreeMapIsPolishedToo) {
+  // The jittered identity without any flip: nothing to untangle, but the polish must still run
+  // (the result may not depend on whether the composed map happened to have a flip), in the
+  // index order and in a seeded one alike.
+  IndexedMesh m;
+  std::vector<FacePoint> on;
+  std::vector<Vec3> image;
+  std::vector<char> fixed;
+  bumpyIdentity(3, 9, m, on, image, fixed);
+  jitterIntoFaces(m, fixed, on, image);
+  const DistortionMetrics d0 = computeDistortion(m, image, m, on);
+  ASSERT_EQ(d0.flipped, 0);
+  ASSERT_GT(d0.eAng, 0.05);
+  for (const std::uint64_t seed : {0, 7}) {
+    MapUntangleOptions o;
+    o.polishOrderSeed = seed;
+    std::vector<FacePoint> on1 = on;
+    std::vector<Vec3> image1 = image;
+    const MapUntangleResult r = untangleCrossMap(m, m, fixed, on1, image1, o);
+    ASSERT_TRUE(r.status.ok());
+    EXPECT_EQ(r.flippedBefore, 0);
+    EXPECT_EQ(r.flippedAfter, 0);
+    EXPECT_EQ(r.attempts, 0) << "stages 1-6 ran on a map without flips";
+    EXPECT_GT(r.moves, 0);
+    const DistortionMetrics d1 = computeDistortion(m, image1, m, on1);
+    EXPECT_EQ(d1.flipped, 0);
+    EXPECT_EQ(d1.degenerate, 0);
+    EXPECT_LT(d1.eAng, 0.1 * d0.eAng) << "seed " << seed;
+    EXPECT_LE(d1.eL2, d0.eL2 * (1 + 1e-9)) << "seed " << seed;
+    for (int v = 0; v < m.vertexCount(); ++v) {
+      EXPECT_LT((pointOf(m, on1[v]) - image1[v]).norm(), 1e-12);
+      if (fixed[v]) EXPECT_EQ(image1[v], image[v]) << "anchor " << v << " moved";
+    }
   }
 }
 

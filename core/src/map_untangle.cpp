@@ -685,16 +685,35 @@ int polishMap(const IndexedMesh& S, const IndexedMesh& T, const SurfaceWalker& w
     sumAt += e.at, sumL2 += e.l2, sumAng += e.ang;
   }
   if (!(sumAt > 0)) return 0;
+  // A map without angle distortion but for rounding (the identity, a similarity) is where the
+  // polish would end anyway: its relative gains would be rounding noise.
+  double sumAs = 0;
+  for (double a : sourceArea) sumAs += a;
+  if (sumAng <= 1e-12 * sumAs) return 0;
   auto movable = [&](int v) { return !facesOf[v].empty() && onTarget[v].face >= 0 && !(v < (int)fixed.size() && fixed[v]); };
   std::vector<char> active(nv, 0);
   for (int v = 0; v < nv; ++v) active[v] = movable(v);
   int moves = 0;
   std::vector<Terms> cur;
+  // The order the sweeps visit the vertices in: by index, or a permutation drawn from
+  // `polishOrderSeed` (Fisher-Yates over a splitmix64 stream: the same on every platform).
+  std::vector<int> order(nv);
+  for (int v = 0; v < nv; ++v) order[v] = v;
+  if (options.polishOrderSeed != 0) {
+    std::uint64_t state = options.polishOrderSeed;
+    auto next64 = [&state] {
+      std::uint64_t z = (state += 0x9E3779B97F4A7C15ull);
+      z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+      z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+      return z ^ (z >> 31);
+    };
+    for (int i = nv - 1; i > 0; --i) std::swap(order[i], order[next64() % static_cast<std::uint64_t>(i + 1)]);
+  }
   for (int sweep = 0; sweep < options.polishSweeps; ++sweep) {
     std::vector<char> next(nv, 0);
     int swept = 0;
     const double angStart = sumAng, l2Start = sumL2 / (sumAt * sumAt);
-    for (int v = 0; v < nv; ++v) {
+    for (const int v : order) {
       if (!active[v]) continue;
       // The vertex's triangles as they are; a degenerate one is left to the untangling.
       cur.clear();
@@ -877,74 +896,78 @@ MapUntangleResult untangleCrossMap(const IndexedMesh& S, const IndexedMesh& T, c
     return n;
   };
   const int before = flips(onTarget, image);
-  if (before == 0) return MapUntangleResult{};  // nothing to untangle: the map is left as it is
   const std::vector<FacePoint> startOn = onTarget;
   const std::vector<Vec3> startImage = image;
   // Built once for every run below.
   const SurfaceWalker walker(T);
   const Stars stars(S);
-  MapUntangleResult r = untangleOnce(S, T, walker, stars, fixed, onTarget, image, options);
-  r.flippedBefore = before;
-  r.flippedAfter = flips(onTarget, image);
-  r.attempts = 1;
-  // Where flips survive, the whole run again from the start with other bounds; the map with
-  // the fewest flips, then the lowest E_L2, is kept.
-  double bestL2 = r.flippedAfter > 0 ? l2StretchOf(S, image) : 0.0;
-  for (const double bound : options.retryDistortions) {
-    if (r.flippedAfter == 0) break;
-    std::vector<FacePoint> on = startOn;
-    std::vector<Vec3> x = startImage;
-    MapUntangleOptions o = options;
-    o.maxDistortion = bound;
-    MapUntangleResult t = untangleOnce(S, T, walker, stars, fixed, on, x, o);
-    t.flippedBefore = before;
-    t.flippedAfter = flips(on, x);
-    t.attempts = r.attempts + 1;
-    const double l2 = l2StretchOf(S, x);
-    if (t.flippedAfter < r.flippedAfter || (t.flippedAfter == r.flippedAfter && l2 < bestL2)) {
-      r = t, bestL2 = l2;
-      onTarget = std::move(on), image = std::move(x);
-    } else {
-      r.attempts = t.attempts;
-    }
-  }
-  // Flips left next to an anchor: where the composed map folds the anchor's star (its
-  // neighbours' images in a wedge on one side of it, as where the two layouts meet the anchor at
-  // corner angles far apart), no move of one neighbour undoes it, and relaxations with the
-  // anchor fixed inside keep the wedge. The untangling is run again from the kept map with the
-  // anchor's neighbours laid out round it anew (reembedStar), kept when fewer flips are left.
-  if (r.flippedAfter > 0 && !options.anchorRestartRings.empty()) {
-    std::vector<int> anchors;
-    for (const auto& t : S.faces) {
-      if (!flippedFace(t, onTarget, image)) continue;
-      for (int v : t)
-        if (v < (int)fixed.size() && fixed[v]) anchors.push_back(v);
-    }
-    std::sort(anchors.begin(), anchors.end());
-    anchors.erase(std::unique(anchors.begin(), anchors.end()), anchors.end());
-    for (int a : anchors) {
+  MapUntangleResult r;
+  // Stages 1-6 only where something is flipped; the polish (stage 7) in any case, so that the
+  // result does not depend on whether the composed map happened to have a flip.
+  if (before > 0) {
+    r = untangleOnce(S, T, walker, stars, fixed, onTarget, image, options);
+    r.flippedBefore = before;
+    r.flippedAfter = flips(onTarget, image);
+    r.attempts = 1;
+    // Where flips survive, the whole run again from the start with other bounds; the map with
+    // the fewest flips, then the lowest E_L2, is kept.
+    double bestL2 = r.flippedAfter > 0 ? l2StretchOf(S, image) : 0.0;
+    for (const double bound : options.retryDistortions) {
       if (r.flippedAfter == 0) break;
-      // Every disk size from the same map; the one with the fewest flips, then the lowest E_L2.
-      const std::vector<FacePoint> keptOn = onTarget;
-      const std::vector<Vec3> keptImage = image;
-      int bestLeft = r.flippedAfter;
-      double bestRestartL2 = 0;
-      MapUntangleResult best;  // the untangling of the restart kept (none: `bestLeft` unchanged)
-      for (const int rings : options.anchorRestartRings) {
-        std::vector<FacePoint> on = keptOn;
-        std::vector<Vec3> x = keptImage;
-        if (!reembedStar(S, stars, walker, fixed, a, rings, on, x)) continue;
-        const MapUntangleResult t = untangleOnce(S, T, walker, stars, fixed, on, x, options);
-        ++r.attempts;
-        const int left = flips(on, x);
-        if (left > bestLeft || (left == bestLeft && bestLeft == r.flippedAfter)) continue;
-        const double l2 = l2StretchOf(S, x);
-        if (left == bestLeft && l2 >= bestRestartL2) continue;
-        bestLeft = left, bestRestartL2 = l2, best = t;
+      std::vector<FacePoint> on = startOn;
+      std::vector<Vec3> x = startImage;
+      MapUntangleOptions o = options;
+      o.maxDistortion = bound;
+      MapUntangleResult t = untangleOnce(S, T, walker, stars, fixed, on, x, o);
+      t.flippedBefore = before;
+      t.flippedAfter = flips(on, x);
+      t.attempts = r.attempts + 1;
+      const double l2 = l2StretchOf(S, x);
+      if (t.flippedAfter < r.flippedAfter || (t.flippedAfter == r.flippedAfter && l2 < bestL2)) {
+        r = t, bestL2 = l2;
         onTarget = std::move(on), image = std::move(x);
+      } else {
+        r.attempts = t.attempts;
       }
-      if (bestLeft < r.flippedAfter) r.moves += best.moves, r.degenerateAfter = best.degenerateAfter;
-      r.flippedAfter = bestLeft;
+    }
+    // Flips left next to an anchor: where the composed map folds the anchor's star (its
+    // neighbours' images in a wedge on one side of it, as where the two layouts meet the anchor at
+    // corner angles far apart), no move of one neighbour undoes it, and relaxations with the
+    // anchor fixed inside keep the wedge. The untangling is run again from the kept map with the
+    // anchor's neighbours laid out round it anew (reembedStar), kept when fewer flips are left.
+    if (r.flippedAfter > 0 && !options.anchorRestartRings.empty()) {
+      std::vector<int> anchors;
+      for (const auto& t : S.faces) {
+        if (!flippedFace(t, onTarget, image)) continue;
+        for (int v : t)
+          if (v < (int)fixed.size() && fixed[v]) anchors.push_back(v);
+      }
+      std::sort(anchors.begin(), anchors.end());
+      anchors.erase(std::unique(anchors.begin(), anchors.end()), anchors.end());
+      for (int a : anchors) {
+        if (r.flippedAfter == 0) break;
+        // Every disk size from the same map; the one with the fewest flips, then the lowest E_L2.
+        const std::vector<FacePoint> keptOn = onTarget;
+        const std::vector<Vec3> keptImage = image;
+        int bestLeft = r.flippedAfter;
+        double bestRestartL2 = 0;
+        MapUntangleResult best;  // the untangling of the restart kept (none: `bestLeft` unchanged)
+        for (const int rings : options.anchorRestartRings) {
+          std::vector<FacePoint> on = keptOn;
+          std::vector<Vec3> x = keptImage;
+          if (!reembedStar(S, stars, walker, fixed, a, rings, on, x)) continue;
+          const MapUntangleResult t = untangleOnce(S, T, walker, stars, fixed, on, x, options);
+          ++r.attempts;
+          const int left = flips(on, x);
+          if (left > bestLeft || (left == bestLeft && bestLeft == r.flippedAfter)) continue;
+          const double l2 = l2StretchOf(S, x);
+          if (left == bestLeft && l2 >= bestRestartL2) continue;
+          bestLeft = left, bestRestartL2 = l2, best = t;
+          onTarget = std::move(on), image = std::move(x);
+        }
+        if (bestLeft < r.flippedAfter) r.moves += best.moves, r.degenerateAfter = best.degenerateAfter;
+        r.flippedAfter = bestLeft;
+      }
     }
   }
   // The polish, once, on the map kept: it never turns a triangle bad, so the flip count cannot
