@@ -22,6 +22,7 @@ scal_a = [r for r in rows(os.path.join(out, 'scaling_anchors', 'scaling.csv')) i
 scal_s = [r for r in rows(os.path.join(out, 'scaling_size', 'scaling.csv')) if r['experiment'] == 'size']
 methods = ['greedy', 'voronoi-E1', 'voronoi-C']
 full = rows(os.path.join(out, 'scaling_size', 'full.csv'))
+orders = rows(os.path.join(out, 'table_orders.csv'))
 
 def fit(points):
     """Least-squares exponent k of t = c * x^k over (x, t) with t > 0."""
@@ -126,6 +127,39 @@ def md_speedup(suffix=''):
     lines.append(f"| **pairs where Voronoi C is lower** | | | | | {wins[0]} of {n} | {wins[1]} of {n} | {wins[2]} of {n} | {wins[3]} of {n} | {wins[4]} of {n} |")
     return '\n'.join(lines)
 
+def md_orders():
+    """Greedy against Voronoi C over the polish's vertex orders: the range of each method's final
+    E_ang and E_L2, and whether Voronoi C is lower in every order (its worst below greedy's best),
+    in none (its best above greedy's worst), or in some (the ranges overlap)."""
+    pairs = []
+    for r in orders:
+        if r['pair'] not in pairs:
+            pairs.append(r['pair'])
+    n_orders = max([int(r['order_seed']) for r in orders] + [-1]) + 1
+    if n_orders < 2:
+        return '(one polish order only: run `bench/run.sh` without `--quick`)'
+    lines = ['| pair | greedy E_ang | Voronoi C E_ang | Voronoi C lower E_ang | greedy E_L2 | Voronoi C E_L2 | Voronoi C lower E_L2 |',
+             '|---|---|---|---|---|---|---|']
+    tally = {'e_ang': [0, 0, 0], 'e_l2': [0, 0, 0]}
+    for p in pairs:
+        runs = {m: [r for r in orders if r['pair'] == p and r['method'] == m] for m in ('greedy', 'voronoi-C')}
+        if any(r['status'] != 'ok' for rs in runs.values() for r in rs) or not all(runs.values()):
+            lines.append(f"| {p} | failed run(s) | | | | | |")
+            continue
+        cells = []
+        for k in ('e_ang', 'e_l2'):
+            g = [float(r[k]) for r in runs['greedy']]
+            c = [float(r[k]) for r in runs['voronoi-C']]
+            verdict = 0 if max(c) < min(g) else 2 if min(c) > max(g) else 1
+            tally[k][verdict] += 1
+            cells += [f'{min(g):.3f} – {max(g):.3f}', f'{min(c):.3f} – {max(c):.3f}',
+                      ['in every order', 'in some orders', 'in no order'][verdict]]
+        lines.append(f"| {p} | " + ' | '.join(cells) + ' |')
+    t = lambda k: f"every order {tally[k][0]}, some {tally[k][1]}, none {tally[k][2]}"
+    lines.append(f"| **pairs** | | | {t('e_ang')} | | | {t('e_l2')} |")
+    return f'{n_orders} polish orders per method and pair (the index order of the table above, then ' \
+           f'{n_orders - 1} seeded permutations).\n\n' + '\n'.join(lines)
+
 def md_scaling(data, xcol):
     if not data:
         return '(not run)'
@@ -222,6 +256,16 @@ optimal (the issue's definition); E_ang is the area-weighted (σ1/σ2 + σ2/σ1)
 ## Speed-up and distortion, measured side by side
 
 {md_speedup()}
+
+## How far the polish's vertex order moves the final numbers
+
+The polish at the end of the untangling (`map_untangle.h`) is a local descent that visits the
+vertices one at a time; where it ends depends on the order it visits them in. The same runs of
+greedy and Voronoi C, with the vertices visited in seeded random orders
+(`MapUntangleOptions::polishOrderSeed`), show how much of a difference between the methods is
+that order alone:
+
+{md_orders()}
 
 ## The same with the paths as traced (the paper's protocol)
 

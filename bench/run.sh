@@ -2,12 +2,13 @@
 # The benchmark, from scratch, in one command: builds, then runs on this machine
 #   1. the comparison table (paper's Table 2): every pair of bench/manifest.txt with the greedy
 #      baseline and the Voronoi method in its E1 (one edge node) and C (adaptive) settings;
+#      greedy and C also with two more polish vertex orders (the spread of the final numbers);
 #   2. scaling: layout time against anchors (on diplodocus) and against mesh size (the cow
 #      subdivided 1-to-4), both methods, next to one full Dijkstra sweep of the edge-node graph;
 #   3. random-anchor stress on synthetic genus 0/1/2 pairs;
 #   4. plots (gnuplot) and renders (cbd_render), and bench/README.md with every number from
 #      this run.
-# Usage: bench/run.sh [--quick]     (--quick: fewer scaling points and stress sets)
+# Usage: bench/run.sh [--quick]     (--quick: fewer scaling points and stress sets, one polish order)
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 QUICK=0; [ "${1:-}" = "--quick" ] && QUICK=1
@@ -20,7 +21,8 @@ mkdir -p "$OUT"
 MESHES="$ROOT/third_party/cgal-data/meshes"
 
 echo "== table"
-"$B" table "$ROOT" "$ROOT/bench/manifest.txt" "$OUT" | tee "$OUT/table.log"
+if [ "$QUICK" = 1 ]; then ORDERS=1; else ORDERS=3; fi
+"$B" table "$ROOT" "$ROOT/bench/manifest.txt" "$OUT" "$ORDERS" | tee "$OUT/table.log"
 
 echo "== scaling"
 if [ "$QUICK" = 1 ]; then COUNTS=8,16,32; LEVELS=2; else COUNTS=8,16,32,64,128; LEVELS=3; fi
