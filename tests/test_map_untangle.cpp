@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <string>
 
 #include "cbd/distortion.h"
 #include "cbd/map_untangle.h"
@@ -55,6 +56,25 @@ void jitterIntoFaces(const IndexedMesh& m, const std::vector<char>& fixed, std::
     on[v].bary = Vec3::Constant(0.5 * s);
     on[v].bary[k] = 1.0 - s;
     image[v] = pointOf(m, on[v]);
+  }
+}
+
+/// What a polish must leave of `before` (a map of m onto itself, anchors `fixed`): no flipped or
+/// degenerate triangle, E_ang below a tenth of `reference`'s, E_L2 not above it, every image on
+/// its face, the anchors where they were. `what` names the run in messages.
+void expectPolished(const IndexedMesh& m, const std::vector<char>& fixed, const std::vector<Vec3>& before,
+                    const DistortionMetrics& reference, const std::vector<FacePoint>& on,
+                    const std::vector<Vec3>& image, const std::string& what) {
+  const DistortionMetrics d = computeDistortion(m, image, m, on);
+  EXPECT_EQ(d.flipped, 0) << what;
+  EXPECT_EQ(d.degenerate, 0) << what;
+  EXPECT_LT(d.eAng, 0.1 * reference.eAng) << what << ": before " << reference.eAng << ", polished " << d.eAng;
+  EXPECT_LE(d.eL2, reference.eL2 * (1 + 1e-9)) << what << ": before " << reference.eL2 << ", polished " << d.eL2;
+  for (int v = 0; v < m.vertexCount(); ++v) {
+    ASSERT_GE(on[v].face, 0) << what;
+    EXPECT_GE(on[v].bary.minCoeff(), -1e-12) << what;
+    EXPECT_LT((pointOf(m, on[v]) - image[v]).norm(), 1e-12) << what;
+    if (fixed[v]) EXPECT_EQ(image[v], before[v]) << what << ": anchor " << v << " moved";
   }
 }
 
@@ -251,18 +271,8 @@ TEST(MapUntangle, PolishLowersBothMetricsAndAddsNoFlip) {
   ASSERT_EQ(rr.flippedAfter, 0);
   EXPECT_EQ(rp.flippedAfter, 0);
   EXPECT_GT(rp.moves, rr.moves);
-  const DistortionMetrics dr = computeDistortion(m, imageRaw, m, onRaw);
-  const DistortionMetrics dp = computeDistortion(m, imagePolished, m, onPolished);
-  EXPECT_EQ(dp.flipped, 0);
-  EXPECT_EQ(dp.degenerate, 0);
-  EXPECT_LT(dp.eAng, 0.1 * dr.eAng) << "unpolished " << dr.eAng << ", polished " << dp.eAng;
-  EXPECT_LE(dp.eL2, dr.eL2 * (1 + 1e-9)) << "unpolished " << dr.eL2 << ", polished " << dp.eL2;
-  for (int v = 0; v < m.vertexCount(); ++v) {
-    ASSERT_GE(onPolished[v].face, 0);
-    EXPECT_GE(onPolished[v].bary.minCoeff(), -1e-12);
-    EXPECT_LT((pointOf(m, onPolished[v]) - imagePolished[v]).norm(), 1e-12);
-    if (fixed[v]) EXPECT_EQ(imagePolished[v], image[v]) << "anchor " << v << " moved";
-  }
+  expectPolished(m, fixed, image, computeDistortion(m, imageRaw, m, onRaw), onPolished, imagePolished,
+                 "against the unpolished untangling");
 }
 
 TEST(MapUntangle, AFlipFreeMapIsPolishedToo) {
@@ -289,15 +299,7 @@ TEST(MapUntangle, AFlipFreeMapIsPolishedToo) {
     EXPECT_EQ(r.flippedAfter, 0);
     EXPECT_EQ(r.attempts, 0) << "stages 1-6 ran on a map without flips";
     EXPECT_GT(r.moves, 0);
-    const DistortionMetrics d1 = computeDistortion(m, image1, m, on1);
-    EXPECT_EQ(d1.flipped, 0);
-    EXPECT_EQ(d1.degenerate, 0);
-    EXPECT_LT(d1.eAng, 0.1 * d0.eAng) << "seed " << seed;
-    EXPECT_LE(d1.eL2, d0.eL2 * (1 + 1e-9)) << "seed " << seed;
-    for (int v = 0; v < m.vertexCount(); ++v) {
-      EXPECT_LT((pointOf(m, on1[v]) - image1[v]).norm(), 1e-12);
-      if (fixed[v]) EXPECT_EQ(image1[v], image[v]) << "anchor " << v << " moved";
-    }
+    expectPolished(m, fixed, image, d0, on1, image1, "seed " + std::to_string(seed));
   }
 }
 

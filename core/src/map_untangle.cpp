@@ -650,9 +650,11 @@ int polishMap(const IndexedMesh& S, const IndexedMesh& T, const SurfaceWalker& w
   const double diag2 = boxDiagonal2(T.positions);
   const std::vector<std::vector<int>>&facesOf = stars.facesOf, &nbr = stars.nbr;
   std::vector<double> sourceArea(nf);
+  double sumAs = 0;
   for (int f = 0; f < nf; ++f) {
     const auto& t = S.faces[f];
     sourceArea[f] = 0.5 * (S.positions[t[1]] - S.positions[t[0]]).cross(S.positions[t[2]] - S.positions[t[0]]).norm();
+    sumAs += sourceArea[f];
   }
   // One triangle's share of the metrics with vertex v (optionally) at x, located at `where`.
   // `bad` is the untangling's strict test; a triangle that fails it already may stay so, but
@@ -687,8 +689,6 @@ int polishMap(const IndexedMesh& S, const IndexedMesh& T, const SurfaceWalker& w
   if (!(sumAt > 0)) return 0;
   // A map without angle distortion but for rounding (the identity, a similarity) is where the
   // polish would end anyway: its relative gains would be rounding noise.
-  double sumAs = 0;
-  for (double a : sourceArea) sumAs += a;
   if (sumAng <= 1e-12 * sumAs) return 0;
   auto movable = [&](int v) { return !facesOf[v].empty() && onTarget[v].face >= 0 && !(v < (int)fixed.size() && fixed[v]); };
   std::vector<char> active(nv, 0);
