@@ -108,9 +108,10 @@ TracedPath PathTracer::trace(const PathQuery& q) {
   const int nv = mesh_.vertexCount();
   const size_t ns = slotEdge_.size();
   if (distV_.size() < static_cast<size_t>(nv)) {
-    distV_.resize(nv), parentV_.resize(nv), stampV_.resize(nv, 0), blockV_.resize(nv, 0);
+    distV_.resize(nv), hV_.resize(nv), parentV_.resize(nv), stampV_.resize(nv, 0), blockV_.resize(nv, 0);
+    goalV_.resize(nv, 0);
   }
-  if (distS_.size() < ns) distS_.resize(ns), parentS_.resize(ns), stampS_.resize(ns, 0);
+  if (distS_.size() < ns) distS_.resize(ns), hS_.resize(ns), parentS_.resize(ns), stampS_.resize(ns, 0);
   if (blockE_.size() < static_cast<size_t>(mesh_.edgeCount())) blockE_.resize(mesh_.edgeCount(), 0);
   ++stamp_;
   const uint32_t st = stamp_;
@@ -130,7 +131,10 @@ TracedPath PathTracer::trace(const PathQuery& q) {
   // Goals by vertex (a vertex may hold several goals, e.g. two sectors of one anchor).
   std::unordered_map<int, std::vector<int>> goalsAt;
   goalsAt.reserve(q.goals.size());
-  for (size_t g = 0; g < q.goals.size(); ++g) goalsAt[q.goals[g].vertex].push_back(static_cast<int>(g));
+  for (size_t g = 0; g < q.goals.size(); ++g) {
+    goalsAt[q.goals[g].vertex].push_back(static_cast<int>(g));
+    goalV_[q.goals[g].vertex] = st;
+  }
 
   auto dist = [&](int64_t n) -> double {
     if (n >= 0) return stampV_[n] == st ? distV_[n] : kInf;
@@ -140,7 +144,8 @@ TracedPath PathTracer::trace(const PathQuery& q) {
   // A* with the straight-line distance to the nearest goal vertex: a consistent lower bound on
   // the remaining path (arcs are straight segments, and a minimum of consistent bounds is
   // consistent), so the first goal reached is the nearest and its path is shortest. Only when
-  // every goal must be settled is it plain Dijkstra.
+  // every goal must be settled is it plain Dijkstra. A node's bound is computed once, when the
+  // search first reaches it (hV_, hS_), and kept with its distance.
   const bool astar = !q.distancesOnly && !q.goals.empty();
   std::vector<Vec3> goalPos;
   if (astar)
@@ -156,22 +161,29 @@ TracedPath PathTracer::trace(const PathQuery& q) {
   std::priority_queue<Item, std::vector<Item>, std::greater<Item>> pq;
   auto relax = [&](int64_t from, int64_t to, double d) {
     if (to >= 0) {
-      if (stampV_[to] != st || d < distV_[to]) {
-        stampV_[to] = st, distV_[to] = d, parentV_[to] = from;
-        pq.push({d + heuristic(to), to});
+      if (stampV_[to] != st) {
+        stampV_[to] = st, hV_[to] = heuristic(to);
+      } else if (d >= distV_[to]) {
+        return;
       }
+      distV_[to] = d, parentV_[to] = from;
+      pq.push({d + hV_[to], to});
     } else {
       const size_t s = static_cast<size_t>(-to - 1);
-      if (stampS_[s] != st || d < distS_[s]) {
-        stampS_[s] = st, distS_[s] = d, parentS_[s] = from;
-        pq.push({d + heuristic(to), to});
+      if (stampS_[s] != st) {
+        stampS_[s] = st, hS_[s] = heuristic(to);
+      } else if (d >= distS_[s]) {
+        return;
       }
+      distS_[s] = d, parentS_[s] = from;
+      pq.push({d + hS_[s], to});
     }
   };
+  auto bound = [&](int64_t n) { return n >= 0 ? hV_[n] : hS_[static_cast<size_t>(-n - 1)]; };
   // Arrive at a goal vertex through face f (or along an edge with faces f, f2).
   auto arrive = [&](int64_t from, int v, int f, int f2, double d) {
+    if (goalV_[v] != st) return;
     const auto it = goalsAt.find(v);
-    if (it == goalsAt.end()) return;
     for (int g : it->second) {
       const PathGoal& goal = q.goals[g];
       if (!goal.faces.empty() && !contains(goal.faces, f) && (f2 < 0 || !contains(goal.faces, f2))) continue;
@@ -203,7 +215,7 @@ TracedPath PathTracer::trace(const PathQuery& q) {
   };
 
   const Vec3 srcPos = mesh_.position(q.source);
-  stampV_[q.source] = st, distV_[q.source] = 0.0, parentV_[q.source] = kNone;
+  stampV_[q.source] = st, distV_[q.source] = 0.0, parentV_[q.source] = kNone, hV_[q.source] = heuristic(q.source);
   pq.push({0.0, q.source});
   int reached = -1;
   size_t settledGoals = 0;
@@ -222,7 +234,7 @@ TracedPath PathTracer::trace(const PathQuery& q) {
       continue;
     }
     const double d = dist(u);
-    if (key > d + heuristic(u)) continue;  // a stale entry
+    if (key > d + bound(u)) continue;  // a stale entry
     const Vec3 pu = u == q.source ? srcPos : nodePosition(u);
     const bool atSource = (u == q.source);
     auto cross = [&](int64_t w, int f) { offer(u, w, d + (nodePosition(w) - pu).norm(), f, -1); };

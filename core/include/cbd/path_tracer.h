@@ -142,9 +142,9 @@ class PathTracer {
   std::vector<int> slotEdge_;
   std::vector<Vec3> slotPos_;  ///< position of every edge node, fixed when it is created
   // Dijkstra scratch (stamped so nothing is cleared between searches).
-  std::vector<double> distV_, distS_;
+  std::vector<double> distV_, distS_, hV_, hS_;  // distance, A* bound
   std::vector<int64_t> parentV_, parentS_;
-  std::vector<uint32_t> stampV_, stampS_, blockV_, blockE_;
+  std::vector<uint32_t> stampV_, stampS_, blockV_, blockE_, goalV_;
   uint32_t stamp_ = 0;
 };
 
