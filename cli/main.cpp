@@ -208,7 +208,8 @@ json layoutJson(const cbd::LayoutPair& p) {
   } else {
     const auto& g = p.greedyStats;
     l["greedy"] = {{"candidates", g.candidates}, {"tried", g.tried},         {"accepted", g.accepted},
-                   {"rejected", g.rejected},     {"completion_paths", g.completionPaths}, {"flips", g.flips}};
+                   {"rejected", g.rejected},     {"completion_paths", g.completionPaths},
+                   {"completion_rejected", g.completionRejected}, {"flips", g.flips}};
   }
   return l;
 }
@@ -237,9 +238,9 @@ void printLayout(const cbd::LayoutPair& p) {
   } else {
     const auto& g = p.greedyStats;
     std::printf("layout  greedy: %zu edges, %zu patches; %d candidate pairs, %d traced, %d accepted, %d rejected, "
-                "%d completion paths, %d flips\n",
+                "%d completion paths (%d undone), %d flips\n",
                 p.source.edges.size(), p.source.patches.size(), g.candidates, g.tried, g.accepted, g.rejected,
-                g.completionPaths, g.flips);
+                g.completionPaths, g.completionRejected, g.flips);
   }
 }
 

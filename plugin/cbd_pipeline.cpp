@@ -199,7 +199,8 @@ std::string layoutLine(const cbd::LayoutPair& p) {
   } else {
     const auto& g = p.greedyStats;
     s << "; " << g.candidates << " candidate pairs, " << g.tried << " traced, " << g.accepted << " accepted, "
-      << g.rejected << " rejected, " << g.completionPaths << " completion paths, " << g.flips << " flips";
+      << g.rejected << " rejected, " << g.completionPaths << " completion paths (" << g.completionRejected
+      << " undone), " << g.flips << " flips";
   }
   return s.str();
 }

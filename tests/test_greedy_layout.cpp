@@ -11,6 +11,7 @@
 #include "cbd/target_layout.h"
 #include "cbd/validate_input.h"
 #include "support/fixtures.h"
+#include "support/stress.h"
 
 using namespace cbd;
 namespace fx = cbd::fixtures;
@@ -69,4 +70,19 @@ TEST(GreedyLayout, RejectsMismatchedAnchorCounts) {
   const IndexedMesh s = fx::icosphere(2);
   EXPECT_EQ(buildGreedyLayout(s, {0, 1, 2}, s, {0, 1}).status.code, ErrorCode::InvalidArgument);
   EXPECT_EQ(buildGreedyLayout(s, {0, 1, 2}, s, {0, 1, 99999}).status.code, ErrorCode::InvalidArgument);
+}
+
+// A completion path that is cut in, found inconsistent and taken out again leaves the faces it
+// split behind; the next attempt in the same region must see them as part of it (they once fell
+// outside the region labels: a read past their end, which AddressSanitizer reports). On this
+// genus-2 pair with 4 farthest-point anchors the greedy method undoes a completion path, then
+// ends in a typed failure.
+TEST(GreedyLayout, CompletionAttemptsUndoneLeaveTheRegionWhole) {
+  const stress::SyntheticPair pair = stress::makePair(2);
+  const std::vector<int> sa = stress::randomAnchors(pair.source, 4, 4001, true);
+  std::vector<int> ta;
+  for (int v : sa) ta.push_back(pair.targetOf[v]);
+  const GreedyLayoutResult g = buildGreedyLayout(pair.source, sa, pair.target, ta);
+  EXPECT_GT(g.completionRejected, 0);  // the case this test is about
+  expectValidOrTypedFailure(g, -2, 4);
 }

@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <algorithm>
+#include <map>
 #include <set>
 
 #include "cbd/path_tracer.h"
@@ -241,4 +242,137 @@ TEST(PathTracer, NearestOfSeveralGoalsIsFoundAsByDijkstraAndABoundGivesUp) {
   ASSERT_TRUE(b.found);
   EXPECT_EQ(b.goal, p.goal);
   EXPECT_EQ(b.nodes, p.nodes);
+}
+
+namespace {
+// The faces of every region of `rm`, keyed by the region's lowest face.
+std::map<int, std::vector<int>> facesByFirstFace(const RegionMap& rm) {
+  std::map<int, std::vector<int>> out;
+  for (int f = 0; f < static_cast<int>(rm.faceRegion.size()); ++f) out[rm.firstFace[rm.faceRegion[f]]].push_back(f);
+  return out;
+}
+}  // namespace
+
+TEST(RegionMap, UpdatedWhereAPathIsCutInItEqualsAFreshAnalysis) {
+  // Paths are cut into a refined mesh one by one, each inside one region that is not a triangle
+  // (as the source layout's triangulation does: splits add faces to that region and the path
+  // divides it); after each, the map updated in that region alone must hold the same
+  // regions as a fresh analysis (faces, lowest face, description down to the loops' halfedges),
+  // and name the same region first.
+  struct Case {
+    IndexedMesh mesh;
+    int anchors;
+  };
+  std::vector<Case> cases;
+  cases.push_back({fx::icosphere(3), 12});
+  cases.push_back({fx::torus(2.0, 0.7, 48, 20), 8});
+  cases.push_back({fx::holedPlate(2, 4, 20), 10});
+  for (const Case& c : cases) {
+    SCOPED_TRACE("genus " + std::to_string(validateMesh(c.mesh, "m").genus));
+    RefinedMesh mesh(c.mesh);
+    PathTracer tracer(mesh, EdgeNodeOptions{});
+    const std::vector<int> anchors = farthestPoints(c.mesh, c.anchors);
+    for (int v : anchors) tracer.setAnchor(v, true);
+    auto anchorOf = [&] {
+      std::vector<int> a(mesh.vertexCount(), -1);
+      for (int i = 0; i < c.anchors; ++i) a[anchors[i]] = i;
+      return a;
+    };
+    RegionMap rm = analyzeRegions(mesh, tracer.edgePath(), anchorOf());
+    RegionScratch scratch;
+    int cut = 0, splits = 0;
+    for (int pathId = 0; pathId < 3 * c.anchors; ++pathId) {
+      // Alternately the first region that can be split and the last one (by lowest face), so
+      // that pieces appended to the map come out of order. (Two paths between the same anchors
+      // enclosing nothing cannot be split.)
+      auto splittable = [](const Region& r) {
+        return !r.isTriangle() && !(r.loops.size() == 1 && r.loops[0].corners.size() == 2 && r.interiorAnchors.empty() &&
+                                    r.eulerCharacteristic == 1);
+      };
+      int bad = -1;
+      for (size_t i = 0; i < rm.regions.size(); ++i)
+        if (splittable(rm.regions[i]) &&
+            (bad < 0 || (pathId % 2 == 0) == (rm.firstFace[i] < rm.firstFace[bad])))
+          bad = static_cast<int>(i);
+      if (bad < 0) break;
+      // A diagonal: from a corner (or an anchor inside) to an anchor inside, a corner of another
+      // loop, or a corner of the same loop that is not next to it.
+      const Region& reg = rm.regions[bad];
+      struct End {
+        int anchor, loop, pos;
+      };
+      std::vector<End> ends;
+      for (int a : reg.interiorAnchors) ends.push_back({a, -1, -1});
+      for (size_t l = 0; l < reg.loops.size(); ++l)
+        for (size_t k = 0; k < reg.loops[l].corners.size(); ++k)
+          ends.push_back({reg.loops[l].corners[k], static_cast<int>(l), static_cast<int>(k)});
+      TracedPath tp;
+      for (size_t si = 0; si < ends.size() && !tp.found; ++si) {
+        PathQuery q;
+        q.source = anchors[ends[si].anchor];
+        q.filter = {&rm.faceRegion, bad, bad};
+        for (const End& g : ends) {
+          if (g.anchor == ends[si].anchor) continue;
+          if (g.loop >= 0 && g.loop == ends[si].loop) {
+            const int m = static_cast<int>(reg.loops[g.loop].corners.size()), d = std::abs(g.pos - ends[si].pos);
+            if (d == 1 || d == m - 1) continue;
+          }
+          q.goals.push_back({anchors[g.anchor], {}, 0});
+        }
+        if (!q.goals.empty()) tp = tracer.trace(q);
+      }
+      if (!tp.found) break;
+      const int facesBefore = mesh.faceCount(), regionsBefore = static_cast<int>(rm.regions.size());
+      std::vector<int> chain;
+      ASSERT_TRUE(tracer.commit(tp, pathId, chain).ok());
+      ++cut;
+      updateRegion(rm, mesh, tracer.edgePath(), anchorOf(), bad, scratch);
+      splits += static_cast<int>(rm.regions.size()) > regionsBefore;
+      const RegionMap fresh = analyzeRegions(mesh, tracer.edgePath(), anchorOf());
+      ASSERT_EQ(rm.faceRegion.size(), static_cast<size_t>(mesh.faceCount()));
+      ASSERT_GE(mesh.faceCount(), facesBefore);
+      ASSERT_EQ(rm.regions.size(), fresh.regions.size()) << "after path " << pathId;
+      ASSERT_EQ(facesByFirstFace(rm), facesByFirstFace(fresh)) << "after path " << pathId;
+      for (size_t i = 0; i < rm.regions.size(); ++i) {
+        const int j = fresh.faceRegion[rm.firstFace[i]];
+        ASSERT_EQ(fresh.firstFace[j], rm.firstFace[i]);
+        const Region &a = rm.regions[i], &b = fresh.regions[j];
+        EXPECT_EQ(a.faces, b.faces);
+        EXPECT_EQ(a.eulerCharacteristic, b.eulerCharacteristic);
+        EXPECT_EQ(a.interiorAnchors, b.interiorAnchors);
+        ASSERT_EQ(a.loops.size(), b.loops.size());
+        for (size_t l = 0; l < a.loops.size(); ++l) {
+          EXPECT_EQ(a.loops[l].halfedges, b.loops[l].halfedges);
+          EXPECT_EQ(a.loops[l].corners, b.loops[l].corners);
+          EXPECT_EQ(a.loops[l].cornerHalfedge, b.loops[l].cornerHalfedge);
+          EXPECT_EQ(a.loops[l].sides, b.loops[l].sides);
+        }
+      }
+      const int first = rm.firstNonTriangle(), firstFresh = fresh.firstNonTriangle();
+      ASSERT_EQ(first < 0, firstFresh < 0);
+      if (first >= 0) EXPECT_EQ(rm.firstFace[first], fresh.firstFace[firstFresh]);
+    }
+    EXPECT_GE(cut, c.anchors);  // enough paths to cut the surface into many regions
+    EXPECT_GT(splits, 0);
+  }
+}
+
+TEST(RegionMap, FirstNonTriangleGoesByLowestFace) {
+  // Regions appended by updates are out of the order a fresh analysis numbers them in; the
+  // first region to triangulate is the one with the lowest face, whatever its index.
+  Region triangle;
+  triangle.eulerCharacteristic = 1;
+  triangle.loops.resize(1);
+  triangle.loops[0].corners = {0, 1, 2};
+  Region quad = triangle;
+  quad.loops[0].corners = {0, 1, 2, 3};
+  RegionMap rm;
+  rm.regions = {triangle, quad, triangle, quad, quad};
+  rm.firstFace = {0, 50, 3, 10, 70};
+  EXPECT_EQ(rm.firstNonTriangle(), 3);
+  rm.regions[3] = triangle;
+  EXPECT_EQ(rm.firstNonTriangle(), 1);
+  rm.regions = {triangle, triangle};
+  rm.firstFace = {4, 0};
+  EXPECT_EQ(rm.firstNonTriangle(), -1);
 }

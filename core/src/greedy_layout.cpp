@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <numeric>
 #include <tuple>
 
 #include "cbd/target_layout.h"
@@ -204,12 +205,6 @@ GreedyLayoutResult buildGreedyLayout(const IndexedMesh& S, const std::vector<int
     chains[0].pop_back();
     chains[1].pop_back();
   };
-  auto allTriangles = [&] {
-    const RegionMap rm = analyzeRegions(ss.layout.mesh, ss.tracer.edgePath(), ss.anchorMap());
-    for (const Region& reg : rm.regions)
-      if (!reg.isTriangle()) return false;
-    return true;
-  };
 
   // 2. Trial and error in order of length.
   for (const Candidate& c : queue) {
@@ -231,17 +226,22 @@ GreedyLayoutResult buildGreedyLayout(const IndexedMesh& S, const std::vector<int
   }
 
   // 3. Complete the regions that are not triangles with paths inside corresponding regions.
-  for (int guard = 0; !allTriangles(); ++guard) {
-    const RegionMap ms = analyzeRegions(ss.layout.mesh, ss.tracer.edgePath(), ss.anchorMap());
-    const RegionMap mt = analyzeRegions(st.layout.mesh, st.tracer.edgePath(), st.anchorMap());
-    int bad = -1;
-    for (size_t k = 0; k < ms.regions.size() && bad < 0; ++k)
-      if (!ms.regions[k].isTriangle()) bad = static_cast<int>(k);
+  // Both region maps are analysed once, then updated where a path was cut in; regions are
+  // taken in the order of their lowest face, as a fresh analysis numbers them.
+  RegionMap ms = analyzeRegions(ss.layout.mesh, ss.tracer.edgePath(), ss.anchorMap());
+  RegionMap mt = analyzeRegions(st.layout.mesh, st.tracer.edgePath(), st.anchorMap());
+  for (int guard = 0;; ++guard) {
+    const int bad = ms.firstNonTriangle();
+    if (bad < 0) break;
     const Region& rs = ms.regions[bad];
     // The corresponding target region: the one with the same corners (anchor + outgoing side).
-    const std::vector<RegionEnd> es = regionEnds(ss.layout.mesh, ss.tracer.edgePath(), rs, edges);
+    std::vector<RegionEnd> es = regionEnds(ss.layout.mesh, ss.tracer.edgePath(), rs, edges);
+    std::vector<int> targetOrder(mt.regions.size());
+    std::iota(targetOrder.begin(), targetOrder.end(), 0);
+    std::sort(targetOrder.begin(), targetOrder.end(), [&](int x, int y) { return mt.firstFace[x] < mt.firstFace[y]; });
     int badT = -1;
-    for (size_t k = 0; k < mt.regions.size() && badT < 0; ++k) {
+    for (size_t o = 0; o < targetOrder.size() && badT < 0; ++o) {
+      const int k = targetOrder[o];
       const std::vector<RegionEnd> et = regionEnds(st.layout.mesh, st.tracer.edgePath(), mt.regions[k], edges);
       if (et.size() != es.size() || mt.regions[k].eulerCharacteristic != rs.eulerCharacteristic) continue;
       bool same = true;
@@ -250,9 +250,9 @@ GreedyLayoutResult buildGreedyLayout(const IndexedMesh& S, const std::vector<int
         for (const RegionEnd& f : et) found = found || (f.key == e.key && f.anchor == e.anchor);
         same = same && found;
       }
-      if (same) badT = static_cast<int>(k);
+      if (same) badT = k;
     }
-    const std::vector<RegionEnd> et =
+    std::vector<RegionEnd> et =
         badT >= 0 ? regionEnds(st.layout.mesh, st.tracer.edgePath(), mt.regions[badT], edges) : std::vector<RegionEnd>{};
     auto describe = [&] {
       std::string s = "region of " + std::to_string(rs.faces) + " faces with corners";
@@ -268,8 +268,8 @@ GreedyLayoutResult buildGreedyLayout(const IndexedMesh& S, const std::vector<int
     }
     // Candidate links by source length inside the region.
     const bool disk = rs.loops.size() == 1 && rs.eulerCharacteristic == 1;
-    const std::vector<int>& labelS = ms.faceRegion;
-    const std::vector<int>& labelT = mt.faceRegion;
+    std::vector<int>& labelS = ms.faceRegion;
+    std::vector<int>& labelT = mt.faceRegion;
     struct Link {
       double length;
       int s, g;
@@ -322,6 +322,16 @@ GreedyLayoutResult buildGreedyLayout(const IndexedMesh& S, const std::vector<int
         break;
       }
       dropLast();
+      ++r.completionRejected;
+      // An attempt cut in and taken out again leaves the faces it split, inside the two
+      // regions: label them so, and let the corner wedges hold them.
+      if (labelS.size() < static_cast<size_t>(ss.layout.mesh.faceCount()) ||
+          labelT.size() < static_cast<size_t>(st.layout.mesh.faceCount())) {
+        labelS.resize(ss.layout.mesh.faceCount(), bad);
+        labelT.resize(st.layout.mesh.faceCount(), badT);
+        es = regionEnds(ss.layout.mesh, ss.tracer.edgePath(), rs, edges);
+        et = regionEnds(st.layout.mesh, st.tracer.edgePath(), mt.regions[badT], edges);
+      }
     }
     if (!done) {
       r.status = Status::error(ErrorCode::LayoutFailed,
@@ -329,16 +339,21 @@ GreedyLayoutResult buildGreedyLayout(const IndexedMesh& S, const std::vector<int
                                    " cannot be triangulated without linking an anchor pair twice");
       return r;
     }
+    updateRegion(ms, ss.layout.mesh, ss.tracer.edgePath(), ss.anchorMap(), bad, scratch[0]);
+    updateRegion(mt, st.layout.mesh, st.tracer.edgePath(), st.anchorMap(), badT, scratch[1]);
   }
 
   // 4. Path flipping: replace an edge by the other diagonal of its two patches when shorter.
+  // Only the regions beside the edge are flooded, not the whole surfaces.
   if (options.flipPaths) {
+    std::vector<int> faces, labels[2];
     for (int e = 0; e < static_cast<int>(edges.size()); ++e) {
-      const RegionMap ms = analyzeRegions(ss.layout.mesh, ss.tracer.edgePath(), ss.anchorMap());
       const std::vector<int>& ch = chains[0][e];
       const int h = ss.layout.mesh.findHalfedge(ch[0], ch[1]);
-      const Region& left = ms.regions[ms.faceRegion[ss.layout.mesh.face(h)]];
-      const Region& right = ms.regions[ms.faceRegion[ss.layout.mesh.face(RefinedMesh::twin(h))]];
+      const std::vector<int>& anchorOfS = ss.anchorMap();
+      const Region left = regionAt(ss.layout.mesh, ss.tracer.edgePath(), anchorOfS, ss.layout.mesh.face(h), scratch[0], faces);
+      const Region right = regionAt(ss.layout.mesh, ss.tracer.edgePath(), anchorOfS,
+                                    ss.layout.mesh.face(RefinedMesh::twin(h)), scratch[0], faces);
       auto opposite = [&](const Region& reg) {
         for (int c : reg.loops[0].corners)
           if (c != edges[e].a && c != edges[e].b) return c;
@@ -359,16 +374,15 @@ GreedyLayoutResult buildGreedyLayout(const IndexedMesh& S, const std::vector<int
       linked[old.a][old.b] = linked[old.b][old.a] = 0;
       // Trace c-d inside the merged quadrilateral on both surfaces.
       bool ok = false;
-      std::vector<int> labels[2];
       PathQuery q[2];
       for (int s = 0; s < 2; ++s) {
         Side& sd = *sides[s];
-        const RegionMap rm = analyzeRegions(sd.layout.mesh, sd.tracer.edgePath(), sd.anchorMap());
-        labels[s] = rm.faceRegion;
         const int hv = sd.layout.mesh.findHalfedge(s == 0 ? oldS[0] : oldT[0], s == 0 ? oldS[1] : oldT[1]);
-        const int quad = rm.faceRegion[sd.layout.mesh.face(hv)];
-        const Region& reg = rm.regions[quad];
-        q[s].filter = {&labels[s], quad, quad};
+        const Region reg = regionAt(sd.layout.mesh, sd.tracer.edgePath(), sd.anchorMap(), sd.layout.mesh.face(hv),
+                                    scratch[s], faces);
+        labels[s].assign(sd.layout.mesh.faceCount(), -1);
+        for (int f : faces) labels[s][f] = 0;
+        q[s].filter = {&labels[s], 0, 0};
         q[s].source = sd.vertex(c);
         q[s].goals.push_back({sd.vertex(d), {}, 0});
         if (reg.loops.size() == 1)

@@ -112,12 +112,6 @@ Region describeRegion(const RefinedMesh& m, const std::vector<int>& edgePath, co
   return reg;
 }
 
-/// The region holding face f0, found and described in one pass; `faces` receives its faces.
-Region floodRegion(const RefinedMesh& m, const std::vector<int>& edgePath, const std::vector<int>& anchorOf, int f0,
-                   RegionScratch& sc, std::vector<int>& faces) {
-  faces.assign(1, f0);
-  return describeRegion(m, edgePath, anchorOf, faces, sc, true);
-}
 
 RegionSignature signatureOf(const Region& r, const std::vector<LayoutEdge>& edges) {
   RegionSignature s;
@@ -143,32 +137,81 @@ void RegionScratch::fit(const RefinedMesh& m) {
   ++stamp;
 }
 
+namespace {
+/// Faces reachable from f0 across edges on no path, depth first, each labelled `id` in
+/// `faceRegion` (which must hold -1 for them) and appended to `faces` in the order reached.
+void floodFaces(const RefinedMesh& m, const std::vector<int>& edgePath, int f0, int id, std::vector<int>& faceRegion,
+                std::vector<int>& faces, std::vector<int>& stack) {
+  faces.assign(1, f0);
+  faceRegion[f0] = id;
+  stack.assign(1, f0);
+  while (!stack.empty()) {
+    const int f = stack.back();
+    stack.pop_back();
+    for (int k = 0, h = m.faceHalfedge(f); k < 3; ++k, h = m.next(h)) {
+      if (edgePath[RefinedMesh::edgeOf(h)] >= 0) continue;
+      const int g = m.face(RefinedMesh::twin(h));
+      if (faceRegion[g] < 0) faceRegion[g] = id, faces.push_back(g), stack.push_back(g);
+    }
+  }
+}
+}  // namespace
+
+int RegionMap::firstNonTriangle() const {
+  int best = -1;
+  for (size_t i = 0; i < regions.size(); ++i)
+    if (!regions[i].isTriangle() && (best < 0 || firstFace[i] < firstFace[best])) best = static_cast<int>(i);
+  return best;
+}
+
 RegionMap analyzeRegions(const RefinedMesh& m, const std::vector<int>& edgePath,
                          const std::vector<int>& anchorOfVertex) {
   RegionMap r;
   const int nf = m.faceCount();
   r.faceRegion.assign(nf, -1);
-  std::vector<std::vector<int>> members;
-  std::vector<int> stack;
+  std::vector<int> faces, stack;
+  RegionScratch sc;
   for (int f0 = 0; f0 < nf; ++f0) {
     if (r.faceRegion[f0] >= 0) continue;
-    const int id = static_cast<int>(members.size());
-    members.emplace_back(1, f0);
-    r.faceRegion[f0] = id;
-    stack.assign(1, f0);
-    while (!stack.empty()) {
-      const int f = stack.back();
-      stack.pop_back();
-      for (int k = 0, h = m.faceHalfedge(f); k < 3; ++k, h = m.next(h)) {
-        if (edgePath[RefinedMesh::edgeOf(h)] >= 0) continue;
-        const int g = m.face(RefinedMesh::twin(h));
-        if (r.faceRegion[g] < 0) r.faceRegion[g] = id, members[id].push_back(g), stack.push_back(g);
-      }
-    }
+    floodFaces(m, edgePath, f0, static_cast<int>(r.regions.size()), r.faceRegion, faces, stack);
+    r.firstFace.push_back(f0);
+    r.regions.push_back(describeRegion(m, edgePath, anchorOfVertex, faces, sc));
   }
-  RegionScratch sc;
-  for (auto& faces : members) r.regions.push_back(describeRegion(m, edgePath, anchorOfVertex, faces, sc));
   return r;
+}
+
+void updateRegion(RegionMap& map, const RefinedMesh& m, const std::vector<int>& edgePath,
+                  const std::vector<int>& anchorOfVertex, int region, RegionScratch& sc) {
+  const int nf = m.faceCount();
+  std::vector<int> todo;
+  for (int f = 0; f < nf; ++f) {
+    if (f < static_cast<int>(map.faceRegion.size()) && map.faceRegion[f] != region) continue;
+    todo.push_back(f);  // ascending, so every piece is flooded from its lowest face
+  }
+  map.faceRegion.resize(nf, -1);
+  for (int f : todo) map.faceRegion[f] = -1;
+  std::vector<int> faces, stack;
+  bool first = true;
+  for (int f0 : todo) {
+    if (map.faceRegion[f0] >= 0) continue;
+    const int id = first ? region : static_cast<int>(map.regions.size());
+    floodFaces(m, edgePath, f0, id, map.faceRegion, faces, stack);
+    Region described = describeRegion(m, edgePath, anchorOfVertex, faces, sc);
+    if (first) {
+      map.regions[id] = std::move(described);
+      map.firstFace[id] = f0;
+    } else {
+      map.regions.push_back(std::move(described));
+      map.firstFace.push_back(f0);
+    }
+    first = false;
+  }
+}
+
+Region regionAt(const RefinedMesh& m, const std::vector<int>& edgePath, const std::vector<int>& anchorOf, int f0,
+                RegionScratch& sc, std::vector<int>& faces) {
+  faces.assign(1, f0);
+  return describeRegion(m, edgePath, anchorOf, faces, sc, true);
 }
 
 std::vector<RegionSignature> regionSignaturesAt(const RefinedMesh& m, const std::vector<int>& edgePath,
@@ -182,7 +225,7 @@ std::vector<RegionSignature> regionSignaturesAt(const RefinedMesh& m, const std:
   std::vector<int> faces;
   for (int f : seedFaces) {
     if (sc.faceMark[f] >= first) continue;
-    out.push_back(signatureOf(floodRegion(m, edgePath, anchorOf, f, sc, faces), edges));
+    out.push_back(signatureOf(regionAt(m, edgePath, anchorOf, f, sc, faces), edges));
     if (regionFaces) regionFaces->push_back(std::move(faces));
   }
   std::sort(out.begin(), out.end());
@@ -211,7 +254,7 @@ RegionTracker::RegionTracker(const RefinedMesh& m, const std::vector<int>& edgeP
   std::vector<int> faces;
   for (int f = 0; f < m.faceCount(); ++f) {
     if (label_[f] >= 0) continue;
-    const Region r = floodRegion(m, edgePath, anchorOf, f, scratch_, faces);
+    const Region r = regionAt(m, edgePath, anchorOf, f, scratch_, faces);
     for (int g : faces) label_[g] = static_cast<int>(sig_.size());
     sig_.push_back(signatureOf(r, edges));
   }

@@ -89,13 +89,19 @@ SourceLayoutResult buildSourceLayout(const IndexedMesh& input, const std::vector
     for (int i = 0; i < na; ++i) anchorOf[anchors[i]] = i;
   };
   const int maxExtra = options.maxTriangulationPaths >= 0 ? options.maxTriangulationPaths : 4 * na + 64;
-  std::vector<int> regionLabel;
+  // The regions, analysed once and then updated where each path was cut in; regions are taken
+  // in the order of their lowest face, as a fresh analysis would number them.
+  RegionMap rm;
+  RegionScratch scratch;
+  bool analyzed = false;
+  int bad = -1;
   for (int iteration = 0;; ++iteration) {
     refreshAnchorOf();
-    RegionMap rm = analyzeRegions(L.mesh, tracer.edgePath(), anchorOf);
-    int bad = -1;
-    for (size_t i = 0; i < rm.regions.size() && bad < 0; ++i)
-      if (!rm.regions[i].isTriangle()) bad = static_cast<int>(i);
+    if (!analyzed)
+      rm = analyzeRegions(L.mesh, tracer.edgePath(), anchorOf), analyzed = true;
+    else
+      updateRegion(rm, L.mesh, tracer.edgePath(), anchorOf, bad, scratch);
+    bad = rm.firstNonTriangle();
     if (bad < 0) break;
     const Region& reg = rm.regions[bad];
     auto describe = [&] {
@@ -120,9 +126,9 @@ SourceLayoutResult buildSourceLayout(const IndexedMesh& input, const std::vector
       tracer.release(paths.edges[drop].vertices, drop);
       paths.alive[drop] = 0;
       ++r.removedPaths;
+      analyzed = false;  // two regions merged
       continue;
     }
-    regionLabel = rm.faceRegion;
     // Candidate links: (source anchor + wedge) -> goals (anchor + wedge).
     struct End {
       int anchor;
@@ -158,7 +164,7 @@ SourceLayoutResult buildSourceLayout(const IndexedMesh& input, const std::vector
         PathQuery q;
         q.source = anchors[s.anchor];
         q.sourceFaces = s.faces;
-        q.filter = {&regionLabel, bad, bad};
+        q.filter = {&rm.faceRegion, bad, bad};
         for (size_t gi = 0; gi < ends.size(); ++gi)
           if (gi != si && linkable(s, ends[gi], strict))
             q.goals.push_back({anchors[ends[gi].anchor], ends[gi].faces, static_cast<int>(gi)});

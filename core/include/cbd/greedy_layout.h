@@ -38,6 +38,7 @@ struct GreedyLayoutResult {
   int accepted = 0;         ///< candidates that became layout edges
   int rejected = 0;         ///< candidates traced and undone (order, blocking, unreachable)
   int completionPaths = 0;  ///< extra paths added to complete non-triangular regions
+  int completionRejected = 0;  ///< completion paths traced and undone (order, blocking)
   int flips = 0;            ///< edges replaced by path flipping
   double candidateSeconds = 0.0;  ///< all-pairs shortest paths on both meshes
   double layoutSeconds = 0.0;     ///< trial and error, completion and flipping

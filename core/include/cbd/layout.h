@@ -97,6 +97,10 @@ struct Region {
 struct RegionMap {
   std::vector<int> faceRegion;
   std::vector<Region> regions;
+  std::vector<int> firstFace;  ///< lowest face of every region (analyzeRegions numbers them in this order)
+
+  /// The first region, in the order of `firstFace`, that is not a triangle; -1 when none.
+  int firstNonTriangle() const;
 };
 
 /// Cut the surface along the path edges and describe every region (boundary loops, corners,
@@ -131,6 +135,22 @@ struct RegionScratch {
   uint32_t stamp = 0;
   void fit(const RefinedMesh& mesh);
 };
+
+/// Bring `map` up to date after paths were cut into region `region` only, splitting it (a path
+/// cut in adds faces to the region it crosses and may divide it): the region's faces and the
+/// faces the mesh gained since `map` was made are flooded and described again, exactly as
+/// analyzeRegions would from each piece's lowest face; the piece holding the region's first
+/// face keeps its id, the others are appended. Every other region is left as it is, so a layout
+/// grown path by path inside regions costs the regions it touches, not the surface, per path.
+/// Removing a path merges regions: analyze again instead.
+void updateRegion(RegionMap& map, const RefinedMesh& mesh, const std::vector<int>& edgePath,
+                  const std::vector<int>& anchorOfVertex, int region, RegionScratch& scratch);
+
+/// The region holding face `f`, flooded from it alone (its faces, breadth first, into
+/// `faces`): described as analyzeRegions describes it, except where each loop starts and in
+/// what order loops and interior anchors come. Costs the region, not the surface.
+Region regionAt(const RefinedMesh& mesh, const std::vector<int>& edgePath, const std::vector<int>& anchorOfVertex,
+                int f, RegionScratch& scratch, std::vector<int>& faces);
 
 /// Signatures of only the regions holding the given faces (local flood fills), sorted: after
 /// one path is added, comparing these around it on two surfaces is as good as comparing all.
