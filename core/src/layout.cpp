@@ -112,7 +112,6 @@ Region describeRegion(const RefinedMesh& m, const std::vector<int>& edgePath, co
   return reg;
 }
 
-
 RegionSignature signatureOf(const Region& r, const std::vector<LayoutEdge>& edges) {
   RegionSignature s;
   s.euler = r.eulerCharacteristic;
