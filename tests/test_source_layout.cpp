@@ -259,15 +259,7 @@ TEST(RegionMap, UpdatedWhereAPathIsCutInItEqualsAFreshAnalysis) {
   // divides it); after each, the map updated in that region alone must hold the same
   // regions as a fresh analysis (faces, lowest face, description down to the loops' halfedges),
   // and name the same region first.
-  struct Case {
-    IndexedMesh mesh;
-    int anchors;
-  };
-  std::vector<Case> cases;
-  cases.push_back({fx::icosphere(3), 12});
-  cases.push_back({fx::torus(2.0, 0.7, 48, 20), 8});
-  cases.push_back({fx::holedPlate(2, 4, 20), 10});
-  for (const Case& c : cases) {
+  for (const fx::LayoutCase& c : fx::genusZeroToTwoLayouts()) {
     SCOPED_TRACE("genus " + std::to_string(validateMesh(c.mesh, "m").genus));
     RefinedMesh mesh(c.mesh);
     PathTracer tracer(mesh, EdgeNodeOptions{});

@@ -175,15 +175,7 @@ TEST(RegionTracker, AgreesWithFloodFillsPathByPath) {
   // Replay complete source layouts (sphere, torus, double torus) path by path into an empty
   // partial layout, in two orders; after every path (and after undoing every third one) the
   // tracked signatures beside it and every face's region must be what flood fills find.
-  struct Case {
-    IndexedMesh mesh;
-    int anchors;
-  };
-  std::vector<Case> cases;
-  cases.push_back({fx::icosphere(3), 14});
-  cases.push_back({fx::torus(2.0, 0.7, 48, 20), 9});
-  cases.push_back({fx::holedPlate(2, 4, 20), 16});
-  for (const Case& c : cases) {
+  for (const fx::LayoutCase& c : fx::genusZeroToTwoLayouts()) {
     const SourceLayoutResult sl = buildSourceLayout(c.mesh, farthestPointSampling(c.mesh, c.anchors));
     ASSERT_TRUE(sl.status.ok()) << sl.status.message;
     const Layout& L = sl.layout;

@@ -238,4 +238,12 @@ int eulerCharacteristic(const IndexedMesh& mesh) {
   return static_cast<int>(verts.size()) - static_cast<int>(edges.size()) + mesh.faceCount();
 }
 
+std::vector<LayoutCase> genusZeroToTwoLayouts() {
+  std::vector<LayoutCase> cases;
+  cases.push_back({icosphere(3), 14});
+  cases.push_back({torus(2.0, 0.7, 48, 20), 9});
+  cases.push_back({holedPlate(2, 4, 20), 16});
+  return cases;
+}
+
 }  // namespace cbd::fixtures

@@ -3,6 +3,7 @@
 // validator must recognise. All are built from formulas, nothing is read from disk.
 
 #include <string>
+#include <vector>
 
 #include "cbd/mesh.h"
 
@@ -52,5 +53,15 @@ bool writeOff(const std::string& path, const IndexedMesh& mesh);
 
 /// Euler characteristic V - E + F over referenced vertices.
 int eulerCharacteristic(const IndexedMesh& mesh);
+
+/// A surface and how many anchors to lay out on it.
+struct LayoutCase {
+  IndexedMesh mesh;
+  int anchors;
+};
+
+/// One small layout case per genus 0, 1, 2 (sphere with 14 anchors, torus with 9, double torus
+/// with 16), for tests that cut paths into their regions one by one.
+std::vector<LayoutCase> genusZeroToTwoLayouts();
 
 }  // namespace cbd::fixtures
