@@ -159,25 +159,21 @@ TracedPath PathTracer::trace(const PathQuery& q) {
   };
   using Item = std::pair<double, int64_t>;  // (distance + heuristic, node)
   std::priority_queue<Item, std::vector<Item>, std::greater<Item>> pq;
+  // Vertices and edge nodes keep their scratch in separate arrays, indexed alike.
   auto relax = [&](int64_t from, int64_t to, double d) {
-    if (to >= 0) {
-      if (stampV_[to] != st) {
-        stampV_[to] = st, hV_[to] = heuristic(to);
-      } else if (d >= distV_[to]) {
-        return;
-      }
-      distV_[to] = d, parentV_[to] = from;
-      pq.push({d + hV_[to], to});
-    } else {
-      const size_t s = static_cast<size_t>(-to - 1);
-      if (stampS_[s] != st) {
-        stampS_[s] = st, hS_[s] = heuristic(to);
-      } else if (d >= distS_[s]) {
-        return;
-      }
-      distS_[s] = d, parentS_[s] = from;
-      pq.push({d + hS_[s], to});
+    const bool vertex = to >= 0;
+    const size_t i = vertex ? static_cast<size_t>(to) : static_cast<size_t>(-to - 1);
+    uint32_t& stamp = vertex ? stampV_[i] : stampS_[i];
+    double& dist = vertex ? distV_[i] : distS_[i];
+    double& h = vertex ? hV_[i] : hS_[i];
+    if (stamp != st) {
+      stamp = st, h = heuristic(to);
+    } else if (d >= dist) {
+      return;
     }
+    dist = d;
+    (vertex ? parentV_[i] : parentS_[i]) = from;
+    pq.push({d + h, to});
   };
   auto bound = [&](int64_t n) { return n >= 0 ? hV_[n] : hS_[static_cast<size_t>(-n - 1)]; };
   // Arrive at a goal vertex through face f (or along an edge with faces f, f2).
