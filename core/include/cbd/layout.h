@@ -141,7 +141,8 @@ struct RegionScratch {
 /// faces the mesh gained since `map` was made are flooded and described again, exactly as
 /// analyzeRegions would from each piece's lowest face; the piece holding the region's first
 /// face keeps its id, the others are appended. Every other region is left as it is, so a layout
-/// grown path by path inside regions costs the regions it touches, not the surface, per path.
+/// grown path by path floods and describes only the region each path touches (finding its faces
+/// is one pass over the face labels).
 /// Removing a path merges regions: analyze again instead.
 void updateRegion(RegionMap& map, const RefinedMesh& mesh, const std::vector<int>& edgePath,
                   const std::vector<int>& anchorOfVertex, int region, RegionScratch& scratch);
