@@ -380,3 +380,47 @@ TEST(MapUntangle, AnAnchorDiskFoldedIntoAWedgeIsLaidOutAnew) {
   for (int v = 0; v < m.vertexCount(); ++v)
     if (fixed[v]) EXPECT_EQ(image1[v], image[v]) << "anchor " << v << " moved";
 }
+
+TEST(MapUntangle, AnAnchorDiskRestartLeavesAnotherAnchorsNeighbourhoodInPlace) {
+  // Two anchors 3 rings apart on a sphere, the map the identity (laying a's disk out anew moves
+  // it all the same: the disk is flattened). Restarting a's disk of 4 rings reaches past anchor b: the vertices nearer b than a (b's star among them) must stay where they are,
+  // or b's fan is torn off b's image (camel -> diplodocus-70: anchor 1527's fan stretched 8-fold
+  // by the restart of anchor 3864, 4 rings away).
+  const IndexedMesh m = fx::icosphere(3);
+  std::vector<FacePoint> on;
+  std::vector<Vec3> image;
+  identityMap(m, on, image);
+  const int a = 0;
+  const std::vector<int> da = ringDistance(m, a);
+  int b = -1;
+  for (int v = 0; v < m.vertexCount() && b < 0; ++v)
+    if (da[v] == 3) b = v;
+  ASSERT_GE(b, 0);
+  const std::vector<int> db = ringDistance(m, b);
+  std::vector<char> fixed(m.vertexCount(), 0);
+  fixed[a] = fixed[b] = 1;
+  const int rings = 4;
+  std::vector<FacePoint> on1 = on;
+  std::vector<Vec3> image1 = image;
+  ASSERT_TRUE(relayAnchorDisk(m, m, fixed, a, rings, on1, image1));
+  int moved = 0;
+  for (int v = 0; v < m.vertexCount(); ++v) {
+    const bool aSide = da[v] >= 1 && da[v] <= rings && da[v] < db[v];
+    if (!aSide) {
+      EXPECT_EQ(image1[v], image[v]) << "vertex " << v << " (" << da[v] << " rings from a, " << db[v]
+                                     << " from b) is not a's to move";
+      continue;
+    }
+    moved += image1[v] != image[v];
+    EXPECT_LT((pointOf(m, on1[v]) - image1[v]).norm(), 1e-12);
+  }
+  EXPECT_GT(moved, 0) << "a's own side of the disk was not laid out";
+  // Laid out anew from the identity, nothing is turned over, b's fan included.
+  const DistortionMetrics dm = computeDistortion(m, image1, m, on1);
+  EXPECT_EQ(dm.flipped, 0);
+  EXPECT_EQ(dm.degenerate, 0);
+  for (int f = 0; f < m.faceCount(); ++f) {
+    const auto& t = m.faces[f];
+    if (t[0] == b || t[1] == b || t[2] == b) EXPECT_NEAR(dm.faceStretch[f], 1.0, 0.05) << "face " << f << " of b's fan";
+  }
+}

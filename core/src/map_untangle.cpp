@@ -809,23 +809,49 @@ int polishMap(const IndexedMesh& S, const IndexedMesh& T, const SurfaceWalker& w
 /// Lays the disk of `rings` source rings round the fixed vertex a out anew round a's image: the
 /// source's disk flattened into a's tangent plane (directions by angle about a's normal,
 /// distances as they are), scaled to the present mean distance of a's neighbours, turned to
-/// fit the ring just beyond the disk, and put on the target by straight walks from a's image
-/// (other fixed vertices in the disk stay). False
-/// (nothing moved) when the disk holds an unmapped vertex.
+/// fit the vertices round the disk that stay, and put on the target by straight walks from a's
+/// image. The disk holds only vertices nearer (in rings) to a than to any other fixed vertex:
+/// another anchor and its own neighbourhood stay where they are, so a restart never tears an
+/// anchor's star off that anchor's image (camel -> diplodocus-70: anchor 1527, 4 rings from the
+/// anchor restarted, had its fan stretched 8-fold). False (nothing moved) when the disk holds
+/// an unmapped vertex.
 bool reembedStar(const IndexedMesh& S, const Stars& stars, const SurfaceWalker& walker, const std::vector<char>& fixed,
                  int a, int rings, std::vector<FacePoint>& onTarget, std::vector<Vec3>& image) {
   if (stars.facesOf[a].empty() || onTarget[a].face < 0) return false;
-  // The disk and the ring just beyond it (`beyond`), which stays and decides the turn.
+  auto isFixed = [&](int v) { return v < (int)fixed.size() && fixed[v]; };
+  // Ring distances from a out to 2 * rings, and from the other fixed vertices in that ball
+  // (multi-source), within it: a vertex of the disk is at most `rings` from a, so one at most
+  // that far from another fixed vertex lies within 2 * rings of a.
   std::unordered_map<int, int> dist{{a, 0}};
-  std::vector<int> disk{a}, beyond;
-  for (size_t i = 0; i < disk.size(); ++i) {
-    const int d = dist.at(disk[i]);
-    for (int w : stars.nbr[disk[i]]) {
-      if (!dist.emplace(w, d + 1).second) continue;
-      if (d + 1 <= rings) disk.push_back(w);
-      else beyond.push_back(w);
-    }
+  std::vector<int> ball{a};
+  for (size_t i = 0; i < ball.size(); ++i) {
+    const int d = dist.at(ball[i]);
+    if (d == 2 * rings) continue;
+    for (int w : stars.nbr[ball[i]])
+      if (dist.emplace(w, d + 1).second) ball.push_back(w);
   }
+  std::unordered_map<int, int> other;
+  std::vector<int> front;
+  for (int v : ball)
+    if (v != a && isFixed(v)) other.emplace(v, 0), front.push_back(v);
+  for (size_t i = 0; i < front.size(); ++i) {
+    const int d = other.at(front[i]);
+    if (d == rings) continue;
+    for (int w : stars.nbr[front[i]])
+      if (dist.count(w) && other.emplace(w, d + 1).second) front.push_back(w);
+  }
+  // The disk (a's side of that split, up to `rings`) and the vertices next to it that stay
+  // (`around`: the ring beyond it and the other anchors' sides), which decide the turn.
+  std::vector<int> disk{a}, around;
+  std::unordered_map<int, char> seen{{a, 1}};
+  for (size_t i = 0; i < disk.size(); ++i)
+    for (int w : stars.nbr[disk[i]]) {
+      if (!seen.emplace(w, 1).second) continue;
+      const auto o = other.find(w);
+      const int d = dist.at(w);
+      if (d <= rings && (o == other.end() || o->second > d)) disk.push_back(w);
+      else around.push_back(w);
+    }
   for (size_t i = 1; i < disk.size(); ++i)
     if (onTarget[disk[i]].face < 0) return false;
   // The source's tangent frame at a (area-weighted normal of its triangles).
@@ -844,14 +870,14 @@ bool reembedStar(const IndexedMesh& S, const Stars& stars, const SurfaceWalker& 
   for (int w : stars.nbr[a]) srcMean += (S.positions[w] - S.positions[a]).norm(), imgMean += (image[w] - image[a]).norm(), ++ring1;
   if (!(ring1 > 0 && srcMean > 0 && imgMean > 0)) return false;
   const double scale = imgMean / srcMean;
-  // The turn that fits the images of the ring beyond the disk best (circular mean of the
+  // The turn that fits the images of the vertices round the disk best (circular mean of the
   // differences of the angles about a): those stay, and the disk must join them.
   auto sourceAngle = [&](int w) {
     const Vec3 d = S.positions[w] - S.positions[a];
     return std::atan2(d.dot(sy), d.dot(sx));
   };
   double c = 0, sn = 0;
-  for (int w : beyond.empty() ? stars.nbr[a] : beyond) {
+  for (int w : around.empty() ? stars.nbr[a] : around) {
     if (onTarget[w].face < 0) continue;
     const Vec3 d = image[w] - image[a];
     const double phi = std::atan2(d.dot(ay), d.dot(ax)) - sourceAngle(w);
@@ -860,7 +886,6 @@ bool reembedStar(const IndexedMesh& S, const Stars& stars, const SurfaceWalker& 
   const double offset = std::atan2(sn, c);
   for (size_t i = 1; i < disk.size(); ++i) {
     const int w = disk[i];
-    if (w < (int)fixed.size() && fixed[w]) continue;  // another anchor stays
     const Vec3 d = S.positions[w] - S.positions[a];
     const double r = (d - ns * ns.dot(d)).norm() * scale, angle = sourceAngle(w) + offset;
     onTarget[w] = walker.walk(onTarget[a], r * (std::cos(angle) * ax + std::sin(angle) * ay));

@@ -96,7 +96,8 @@ struct MapUntangleOptions {
   std::vector<double> retryDistortions = {5.0, 3.0, 7.0};
   /// When flips next to an anchor survive that, the untangling once more from the map kept,
   /// per such anchor and per entry here, with the disk of that many source rings round the
-  /// anchor first laid out anew (the source's disk flattened round the anchor's image): a star
+  /// anchor first laid out anew (the source's disk flattened round the anchor's image; vertices
+  /// as near another anchor stay, see `relayAnchorDisk`): a star
   /// the composed map folds into a wedge gives way to no local move. Every entry is tried from
   /// the same map; the run with the fewest flips, then the lowest E_L2, is kept when it leaves
   /// fewer flips than that map. Empty: none.
@@ -150,9 +151,10 @@ std::vector<Vec3> faceNormals(const IndexedMesh& mesh);
 /// The restart of `anchorRestartRings`: lays the disk of `rings` source rings round `anchor` out
 /// anew round the anchor's image (the source's disk flattened into the anchor's tangent plane,
 /// scaled to the present mean distance of its neighbours' images, turned to fit the images of the
-/// ring just beyond the disk, put on the target by straight walks from the anchor's image);
-/// fixed vertices in the disk stay. False (nothing moved) on an
-/// index out of range, or a disk holding an unmapped vertex.
+/// vertices round the disk, put on the target by straight walks from the anchor's image). The
+/// disk holds only the vertices nearer (in rings) to `anchor` than to any other fixed vertex:
+/// other anchors and their neighbourhoods stay. False (nothing moved) on an index out of range,
+/// or a disk holding an unmapped vertex.
 bool relayAnchorDisk(const IndexedMesh& source, const IndexedMesh& target, const std::vector<char>& fixed, int anchor,
                      int rings, std::vector<FacePoint>& onTarget, std::vector<Vec3>& image);
 
