@@ -274,6 +274,23 @@ double l2StretchOf(const IndexedMesh& S, const std::vector<Vec3>& image) {
   return sumAt > 0 ? std::sqrt(l2 / sumAt) * std::sqrt(sumAs / sumAt) : 0.0;
 }
 
+/// E_ang x E_L2^w of the map (the polish's objective), for choosing among untanglings.
+double productOf(const IndexedMesh& S, const std::vector<Vec3>& image, double w) {
+  double sumAs = 0, sumAt = 0, l2 = 0, ang = 0;
+  for (const auto& t : S.faces) {
+    const Vec3 &s0 = S.positions[t[0]], &s1 = S.positions[t[1]], &s2 = S.positions[t[2]];
+    const Vec3 &i0 = image[t[0]], &i1 = image[t[1]], &i2 = image[t[2]];
+    const double as = 0.5 * (s1 - s0).cross(s2 - s0).norm(), at = 0.5 * (i1 - i0).cross(i2 - i0).norm();
+    double frob = 0;
+    const double a = angleDistortion(s0, s1, s2, i0, i1, i2, &frob);
+    if (!(at > 0) || frob >= 1e12) continue;
+    sumAs += as, sumAt += at, l2 += at * 0.5 * frob, ang += as * a;
+  }
+  if (!(sumAt > 0)) return 0.0;
+  const double eL2 = std::sqrt(l2 / sumAt) * std::sqrt(sumAs / sumAt);
+  return ang / sumAs * std::pow(eL2, w);
+}
+
 /// One run of stages 1-4 with the options' bound (flip counts are left to the caller: 0 here).
 /// Internally a triangle is bad when it faces
 /// against the normals of the target faces its corners were located in (`imageFlipped`): at a
@@ -935,8 +952,8 @@ MapUntangleResult untangleCrossMap(const IndexedMesh& S, const IndexedMesh& T, c
     r.flippedAfter = flips(onTarget, image);
     r.attempts = 1;
     // Where flips survive, the whole run again from the start with other bounds; the map with
-    // the fewest flips, then the lowest E_L2, is kept.
-    double bestL2 = r.flippedAfter > 0 ? l2StretchOf(S, image) : 0.0;
+    // the fewest flips, then the lowest E_ang x E_L2^w (the polish's objective), is kept.
+    double bestScore = r.flippedAfter > 0 ? productOf(S, image, options.polishStretchWeight) : 0.0;
     for (const double bound : options.retryDistortions) {
       if (r.flippedAfter == 0) break;
       std::vector<FacePoint> on = startOn;
@@ -947,9 +964,9 @@ MapUntangleResult untangleCrossMap(const IndexedMesh& S, const IndexedMesh& T, c
       t.flippedBefore = before;
       t.flippedAfter = flips(on, x);
       t.attempts = r.attempts + 1;
-      const double l2 = l2StretchOf(S, x);
-      if (t.flippedAfter < r.flippedAfter || (t.flippedAfter == r.flippedAfter && l2 < bestL2)) {
-        r = t, bestL2 = l2;
+      const double score = productOf(S, x, options.polishStretchWeight);
+      if (t.flippedAfter < r.flippedAfter || (t.flippedAfter == r.flippedAfter && score < bestScore)) {
+        r = t, bestScore = score;
         onTarget = std::move(on), image = std::move(x);
       } else {
         r.attempts = t.attempts;
@@ -971,11 +988,12 @@ MapUntangleResult untangleCrossMap(const IndexedMesh& S, const IndexedMesh& T, c
       anchors.erase(std::unique(anchors.begin(), anchors.end()), anchors.end());
       for (int a : anchors) {
         if (r.flippedAfter == 0) break;
-        // Every disk size from the same map; the one with the fewest flips, then the lowest E_L2.
+        // Every disk size from the same map; the one with the fewest flips, then the lowest
+        // E_ang x E_L2^w.
         const std::vector<FacePoint> keptOn = onTarget;
         const std::vector<Vec3> keptImage = image;
         int bestLeft = r.flippedAfter;
-        double bestRestartL2 = 0;
+        double bestRestartScore = 0;
         MapUntangleResult best;  // the untangling of the restart kept (none: `bestLeft` unchanged)
         for (const int rings : options.anchorRestartRings) {
           std::vector<FacePoint> on = keptOn;
@@ -985,9 +1003,9 @@ MapUntangleResult untangleCrossMap(const IndexedMesh& S, const IndexedMesh& T, c
           ++r.attempts;
           const int left = flips(on, x);
           if (left > bestLeft || (left == bestLeft && bestLeft == r.flippedAfter)) continue;
-          const double l2 = l2StretchOf(S, x);
-          if (left == bestLeft && l2 >= bestRestartL2) continue;
-          bestLeft = left, bestRestartL2 = l2, best = t;
+          const double score = productOf(S, x, options.polishStretchWeight);
+          if (left == bestLeft && score >= bestRestartScore) continue;
+          bestLeft = left, bestRestartScore = score, best = t;
           onTarget = std::move(on), image = std::move(x);
         }
         if (bestLeft < r.flippedAfter) r.moves += best.moves, r.degenerateAfter = best.degenerateAfter;

@@ -91,15 +91,16 @@ struct MapUntangleOptions {
   double maxStretchGrowth = 1.05;
   /// When flips survive all that, the whole untangling again from the composed map with each
   /// of these `maxDistortion` bounds in turn, until one leaves no flip; the result with the
-  /// fewest flips, then the lowest E_L2, is kept (the outcome of the greedy local moves
-  /// depends on the bound in no monotone way). Empty: one run.
+  /// fewest flips, then the lowest E_ang x E_L2^polishStretchWeight (the polish's objective), is
+  /// kept (the outcome of the greedy local moves depends on the bound in no monotone way).
+  /// Empty: one run.
   std::vector<double> retryDistortions = {5.0, 3.0, 7.0};
   /// When flips next to an anchor survive that, the untangling once more from the map kept,
   /// per such anchor and per entry here, with the disk of that many source rings round the
   /// anchor first laid out anew (the source's disk flattened round the anchor's image; vertices
-  /// as near another anchor stay, see `relayAnchorDisk`): a star
-  /// the composed map folds into a wedge gives way to no local move. Every entry is tried from
-  /// the same map; the run with the fewest flips, then the lowest E_L2, is kept when it leaves
+  /// as near another anchor stay, see `relayAnchorDisk`): a star the composed map folds into a
+  /// wedge gives way to no local move. Every entry is tried from the same map; the run with the
+  /// fewest flips, then the lowest E_ang x E_L2^polishStretchWeight, is kept when it leaves
   /// fewer flips than that map. Empty: none.
   std::vector<int> anchorRestartRings = {2, 3, 4};
 };
