@@ -91,6 +91,43 @@ std::vector<int> ringDistance(const IndexedMesh& m, int v) {
   return d;
 }
 
+/// The identity of `m` with the disk of 3 rings round vertex a squeezed into a wedge: every
+/// direction about a at a sixth of its angle, so that a's neighbours all lie on one side of it.
+void squeezeAnchorDisk(const IndexedMesh& m, int a, std::vector<FacePoint>& on, std::vector<Vec3>& image) {
+  identityMap(m, on, image);
+  const std::vector<int> d = ringDistance(m, a);
+  const Vec3 n = m.positions[a].normalized();
+  const Vec3 ax = (std::abs(n.x()) < 0.9 ? Vec3::UnitX() : Vec3::UnitY()).cross(n).normalized(), ay = n.cross(ax);
+  // The squeezed point of v, located on the sphere by the closest face centre's face.
+  auto locate = [&](const Vec3& p) {
+    int best = -1;
+    double bestD = 1e300;
+    for (int f = 0; f < m.faceCount(); ++f) {
+      const auto& t = m.faces[f];
+      const double dd = ((m.positions[t[0]] + m.positions[t[1]] + m.positions[t[2]]) / 3 - p).squaredNorm();
+      if (dd < bestD) bestD = dd, best = f;
+    }
+    // Barycentric coordinates of p projected into that face.
+    const auto& t = m.faces[best];
+    const Vec3 e1 = m.positions[t[1]] - m.positions[t[0]], e2 = m.positions[t[2]] - m.positions[t[0]];
+    const Vec3 q = p - m.positions[t[0]];
+    const double a11 = e1.dot(e1), a12 = e1.dot(e2), a22 = e2.dot(e2), det = a11 * a22 - a12 * a12;
+    const double b1 = (a22 * e1.dot(q) - a12 * e2.dot(q)) / det, b2 = (a11 * e2.dot(q) - a12 * e1.dot(q)) / det;
+    Vec3 b(1 - b1 - b2, b1, b2);
+    b = b.cwiseMax(0.0);
+    return FacePoint{best, b / b.sum()};
+  };
+  for (int v = 0; v < m.vertexCount(); ++v) {
+    if (d[v] < 1 || d[v] > 3) continue;
+    const Vec3 r = m.positions[v] - m.positions[a];
+    const double angle = std::atan2(r.dot(ay), r.dot(ax)), len = (r - n * n.dot(r)).norm();
+    const double squeezed = (angle < 0 ? angle + 2 * M_PI : angle) / 6.0;
+    const Vec3 p = (m.positions[a] + len * (std::cos(squeezed) * ax + std::sin(squeezed) * ay)).normalized();
+    on[v] = locate(p);
+    image[v] = pointOf(m, on[v]);
+  }
+}
+
 }  // namespace
 
 TEST(MapUntangle, IdentityIsLeftUnchanged) {
@@ -311,41 +348,12 @@ TEST(MapUntangle, AnAnchorDiskFoldedIntoAWedgeIsLaidOutAnew) {
   IndexedMesh m = fx::icosphere(3);
   std::vector<FacePoint> on;
   std::vector<Vec3> image;
-  identityMap(m, on, image);
   const int a = 0;
+  squeezeAnchorDisk(m, a, on, image);
   std::vector<char> fixed(m.vertexCount(), 0);
   const std::vector<int> d = ringDistance(m, a);
   fixed[a] = 1;
   const Vec3 n = m.positions[a].normalized();
-  const Vec3 ax = (std::abs(n.x()) < 0.9 ? Vec3::UnitX() : Vec3::UnitY()).cross(n).normalized(), ay = n.cross(ax);
-  // The squeezed point of v, located on the sphere by the closest face centre's face.
-  auto locate = [&](const Vec3& p) {
-    int best = -1;
-    double bestD = 1e300;
-    for (int f = 0; f < m.faceCount(); ++f) {
-      const auto& t = m.faces[f];
-      const double dd = ((m.positions[t[0]] + m.positions[t[1]] + m.positions[t[2]]) / 3 - p).squaredNorm();
-      if (dd < bestD) bestD = dd, best = f;
-    }
-    // Barycentric coordinates of p projected into that face.
-    const auto& t = m.faces[best];
-    const Vec3 e1 = m.positions[t[1]] - m.positions[t[0]], e2 = m.positions[t[2]] - m.positions[t[0]];
-    const Vec3 q = p - m.positions[t[0]];
-    const double a11 = e1.dot(e1), a12 = e1.dot(e2), a22 = e2.dot(e2), det = a11 * a22 - a12 * a12;
-    const double b1 = (a22 * e1.dot(q) - a12 * e2.dot(q)) / det, b2 = (a11 * e2.dot(q) - a12 * e1.dot(q)) / det;
-    Vec3 b(1 - b1 - b2, b1, b2);
-    b = b.cwiseMax(0.0);
-    return FacePoint{best, b / b.sum()};
-  };
-  for (int v = 0; v < m.vertexCount(); ++v) {
-    if (d[v] < 1 || d[v] > 3) continue;
-    const Vec3 r = m.positions[v] - m.positions[a];
-    const double angle = std::atan2(r.dot(ay), r.dot(ax)), len = (r - n * n.dot(r)).norm();
-    const double squeezed = (angle < 0 ? angle + 2 * M_PI : angle) / 6.0;
-    const Vec3 p = (m.positions[a] + len * (std::cos(squeezed) * ax + std::sin(squeezed) * ay)).normalized();
-    on[v] = locate(p);
-    image[v] = pointOf(m, on[v]);
-  }
   const int flippedBefore = computeDistortion(m, image, m, on).flipped;
   ASSERT_GT(flippedBefore, 0) << "the fixture must fold the anchor's star";
 
@@ -423,4 +431,40 @@ TEST(MapUntangle, AnAnchorDiskRestartLeavesAnotherAnchorsNeighbourhoodInPlace) {
     const auto& t = m.faces[f];
     if (t[0] == b || t[1] == b || t[2] == b) EXPECT_NEAR(dm.faceStretch[f], 1.0, 0.05) << "face " << f << " of b's fan";
   }
+}
+
+TEST(MapUntangle, AnchorRestartSkipsRingCountsBelowOne) {
+  // The folded anchor star of AnAnchorDiskFoldedIntoAWedgeIsLaidOutAnew, with stages 1-5 all but
+  // off so that the flips reach the anchor restart: a ring count of 0 there is skipped (not a
+  // disk of the anchor alone, nor an exception out of a lookup beyond the ball), and the next
+  // entry lays the star out anew.
+  IndexedMesh m = fx::icosphere(3);
+  std::vector<FacePoint> on;
+  std::vector<Vec3> image;
+  const int a = 0;
+  squeezeAnchorDisk(m, a, on, image);
+  std::vector<char> fixed(m.vertexCount(), 0);
+  fixed[a] = 1;
+  ASSERT_GT(computeDistortion(m, image, m, on).flipped, 0);
+  MapUntangleOptions o;
+  o.maxRounds = 0;
+  o.energySweeps = 0;
+  o.lastResortFactor = 1.0;
+  o.retryDistortions.clear();
+  o.polishSweeps = 0;
+  o.anchorRestartRings = {0, -1};
+  {
+    std::vector<FacePoint> on1 = on;
+    std::vector<Vec3> image1 = image;
+    MapUntangleResult r;
+    ASSERT_NO_THROW(r = untangleCrossMap(m, m, fixed, on1, image1, o));
+    EXPECT_GT(r.flippedAfter, 0) << "stages 1-5 are off and no restart was possible, yet flips went";
+    EXPECT_EQ(image1, image) << "a ring count below 1 moved something";
+  }
+  o.anchorRestartRings = {0, 3};
+  MapUntangleResult r;
+  ASSERT_NO_THROW(r = untangleCrossMap(m, m, fixed, on, image, o));
+  EXPECT_GT(r.flippedBefore, 0);
+  EXPECT_EQ(r.flippedAfter, 0);
+  EXPECT_EQ(computeDistortion(m, image, m, on).flipped, 0);
 }

@@ -830,11 +830,11 @@ int polishMap(const IndexedMesh& S, const IndexedMesh& T, const SurfaceWalker& w
 /// image. The disk holds only vertices nearer (in rings) to a than to any other fixed vertex:
 /// another anchor and its own neighbourhood stay where they are, so a restart never tears an
 /// anchor's star off that anchor's image (camel -> diplodocus-70: anchor 1527, 4 rings from the
-/// anchor restarted, had its fan stretched 8-fold). False (nothing moved) when the disk holds
-/// an unmapped vertex.
+/// anchor restarted, had its fan stretched 8-fold). False (nothing moved) when `rings` < 1 or
+/// the disk holds an unmapped vertex.
 bool reembedStar(const IndexedMesh& S, const Stars& stars, const SurfaceWalker& walker, const std::vector<char>& fixed,
                  int a, int rings, std::vector<FacePoint>& onTarget, std::vector<Vec3>& image) {
-  if (stars.facesOf[a].empty() || onTarget[a].face < 0) return false;
+  if (rings < 1 || stars.facesOf[a].empty() || onTarget[a].face < 0) return false;
   auto isFixed = [&](int v) { return v < (int)fixed.size() && fixed[v]; };
   // Ring distances from a out to 2 * rings, and from the other fixed vertices in that ball
   // (multi-source), within it: a vertex of the disk is at most `rings` from a, so one at most

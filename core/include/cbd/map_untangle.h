@@ -101,7 +101,7 @@ struct MapUntangleOptions {
   /// as near another anchor stay, see `relayAnchorDisk`): a star the composed map folds into a
   /// wedge gives way to no local move. Every entry is tried from the same map; the run with the
   /// fewest flips, then the lowest E_ang x E_L2^polishStretchWeight, is kept when it leaves
-  /// fewer flips than that map. Empty: none.
+  /// fewer flips than that map. Empty: none; entries below 1 are skipped.
   std::vector<int> anchorRestartRings = {2, 3, 4};
 };
 
