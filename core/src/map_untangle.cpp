@@ -259,23 +259,12 @@ double angleDistortion(const Vec3& s0, const Vec3& s1, const Vec3& s2, const Vec
 
 namespace {
 
-/// E_L2 of the map (as computeDistortion has it, with the arithmetic of angleDistortion).
-double l2StretchOf(const IndexedMesh& S, const std::vector<Vec3>& image) {
-  double sumAs = 0, sumAt = 0, l2 = 0;
-  for (const auto& t : S.faces) {
-    const Vec3 &s0 = S.positions[t[0]], &s1 = S.positions[t[1]], &s2 = S.positions[t[2]];
-    const Vec3 &i0 = image[t[0]], &i1 = image[t[1]], &i2 = image[t[2]];
-    const double as = 0.5 * (s1 - s0).cross(s2 - s0).norm(), at = 0.5 * (i1 - i0).cross(i2 - i0).norm();
-    double frob = 0;
-    angleDistortion(s0, s1, s2, i0, i1, i2, &frob);
-    if (!(at > 0) || frob >= 1e12) continue;
-    sumAs += as, sumAt += at, l2 += at * 0.5 * frob;
-  }
-  return sumAt > 0 ? std::sqrt(l2 / sumAt) * std::sqrt(sumAs / sumAt) : 0.0;
-}
-
-/// E_ang x E_L2^w of the map (the polish's objective), for choosing among untanglings.
-double productOf(const IndexedMesh& S, const std::vector<Vec3>& image, double w) {
+/// E_ang and E_L2 of the map (as computeDistortion has them, with the arithmetic of
+/// angleDistortion; degenerate image triangles left out).
+struct MapMetrics {
+  double eAng = 0.0, eL2 = 0.0;
+};
+MapMetrics metricsOf(const IndexedMesh& S, const std::vector<Vec3>& image) {
   double sumAs = 0, sumAt = 0, l2 = 0, ang = 0;
   for (const auto& t : S.faces) {
     const Vec3 &s0 = S.positions[t[0]], &s1 = S.positions[t[1]], &s2 = S.positions[t[2]];
@@ -286,9 +275,17 @@ double productOf(const IndexedMesh& S, const std::vector<Vec3>& image, double w)
     if (!(at > 0) || frob >= 1e12) continue;
     sumAs += as, sumAt += at, l2 += at * 0.5 * frob, ang += as * a;
   }
-  if (!(sumAt > 0)) return 0.0;
-  const double eL2 = std::sqrt(l2 / sumAt) * std::sqrt(sumAs / sumAt);
-  return ang / sumAs * std::pow(eL2, w);
+  MapMetrics m;
+  if (sumAt > 0) m.eAng = ang / sumAs, m.eL2 = std::sqrt(l2 / sumAt) * std::sqrt(sumAs / sumAt);
+  return m;
+}
+
+double l2StretchOf(const IndexedMesh& S, const std::vector<Vec3>& image) { return metricsOf(S, image).eL2; }
+
+/// E_ang x E_L2^w of the map (the polish's objective), for choosing among untanglings.
+double productOf(const IndexedMesh& S, const std::vector<Vec3>& image, double w) {
+  const MapMetrics m = metricsOf(S, image);
+  return m.eAng * std::pow(m.eL2, w);
 }
 
 /// One run of stages 1-4 with the options' bound (flip counts are left to the caller: 0 here).
