@@ -128,6 +128,20 @@ void squeezeAnchorDisk(const IndexedMesh& m, int a, std::vector<FacePoint>& on, 
   }
 }
 
+/// An icosphere's identity map with the disk round its anchor (vertex 0, the only fixed vertex)
+/// squeezed into a wedge (`squeezeAnchorDisk`).
+struct FoldedAnchorStar {
+  IndexedMesh m = fx::icosphere(3);
+  const int a = 0;
+  std::vector<FacePoint> on;
+  std::vector<Vec3> image;
+  std::vector<char> fixed;
+  FoldedAnchorStar() : fixed(m.vertexCount(), 0) {
+    squeezeAnchorDisk(m, a, on, image);
+    fixed[a] = 1;
+  }
+};
+
 }  // namespace
 
 TEST(MapUntangle, IdentityIsLeftUnchanged) {
@@ -345,14 +359,13 @@ TEST(MapUntangle, AnAnchorDiskFoldedIntoAWedgeIsLaidOutAnew) {
   // every direction about the anchor at a sixth of its angle, so that its neighbours all lie on
   // one side of it and the triangle closing its star is turned over (as where the two layouts
   // meet an anchor at very different corner angles, camel -> diplodocus-70 and man -> homer-70).
-  IndexedMesh m = fx::icosphere(3);
-  std::vector<FacePoint> on;
-  std::vector<Vec3> image;
-  const int a = 0;
-  squeezeAnchorDisk(m, a, on, image);
-  std::vector<char> fixed(m.vertexCount(), 0);
+  FoldedAnchorStar star;
+  const IndexedMesh& m = star.m;
+  const int a = star.a;
+  std::vector<FacePoint>& on = star.on;
+  std::vector<Vec3>& image = star.image;
+  const std::vector<char>& fixed = star.fixed;
   const std::vector<int> d = ringDistance(m, a);
-  fixed[a] = 1;
   const Vec3 n = m.positions[a].normalized();
   const int flippedBefore = computeDistortion(m, image, m, on).flipped;
   ASSERT_GT(flippedBefore, 0) << "the fixture must fold the anchor's star";
@@ -438,13 +451,11 @@ TEST(MapUntangle, AnchorRestartSkipsRingCountsBelowOne) {
   // off so that the flips reach the anchor restart: a ring count of 0 there is skipped (not a
   // disk of the anchor alone, nor an exception out of a lookup beyond the ball), and the next
   // entry lays the star out anew.
-  IndexedMesh m = fx::icosphere(3);
-  std::vector<FacePoint> on;
-  std::vector<Vec3> image;
-  const int a = 0;
-  squeezeAnchorDisk(m, a, on, image);
-  std::vector<char> fixed(m.vertexCount(), 0);
-  fixed[a] = 1;
+  FoldedAnchorStar star;
+  const IndexedMesh& m = star.m;
+  std::vector<FacePoint>& on = star.on;
+  std::vector<Vec3>& image = star.image;
+  const std::vector<char>& fixed = star.fixed;
   ASSERT_GT(computeDistortion(m, image, m, on).flipped, 0);
   MapUntangleOptions o;
   o.maxRounds = 0;
