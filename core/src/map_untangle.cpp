@@ -951,12 +951,9 @@ MapUntangleResult untangleCrossMap(const IndexedMesh& S, const IndexedMesh& T, c
     // Where flips survive, the whole run again from the start with other bounds; the map with
     // the fewest flips, then the lowest E_ang x E_L2^w (the polish's objective), is kept.
     double bestScore = r.flippedAfter > 0 ? productOf(S, image, options.polishStretchWeight) : 0.0;
-    for (const double bound : options.retryDistortions) {
-      if (r.flippedAfter == 0) break;
+    auto retryFromStart = [&](const MapUntangleOptions& o) {
       std::vector<FacePoint> on = startOn;
       std::vector<Vec3> x = startImage;
-      MapUntangleOptions o = options;
-      o.maxDistortion = bound;
       MapUntangleResult t = untangleOnce(S, T, walker, stars, fixed, on, x, o);
       t.flippedBefore = before;
       t.flippedAfter = flips(on, x);
@@ -968,6 +965,12 @@ MapUntangleResult untangleCrossMap(const IndexedMesh& S, const IndexedMesh& T, c
       } else {
         r.attempts = t.attempts;
       }
+    };
+    for (const double bound : options.retryDistortions) {
+      if (r.flippedAfter == 0) break;
+      MapUntangleOptions o = options;
+      o.maxDistortion = bound;
+      retryFromStart(o);
     }
     // Flips left next to an anchor: where the composed map folds the anchor's star (its
     // neighbours' images in a wedge on one side of it, as where the two layouts meet the anchor at
@@ -1007,6 +1010,22 @@ MapUntangleResult untangleCrossMap(const IndexedMesh& S, const IndexedMesh& T, c
         }
         if (bestLeft < r.flippedAfter) r.moves += best.moves, r.degenerateAfter = best.degenerateAfter;
         r.flippedAfter = bestLeft;
+      }
+    }
+    // Folds that all that leaves far from every anchor (man -> homer with one edge node: the
+    // man's fingers on homer's stubbier hands, 20-26 rings from the nearest anchor) give way to
+    // relaxation and energy over wider rings: the whole untangling once more from the composed
+    // map with `retryMaxRing`, with each bound in turn, kept by the same rule.
+    if (r.flippedAfter > 0 && options.retryMaxRing > options.maxRing) {
+      bestScore = productOf(S, image, options.polishStretchWeight);
+      std::vector<double> bounds{options.maxDistortion};
+      bounds.insert(bounds.end(), options.retryDistortions.begin(), options.retryDistortions.end());
+      for (const double bound : bounds) {
+        if (r.flippedAfter == 0) break;
+        MapUntangleOptions o = options;
+        o.maxDistortion = bound;
+        o.maxRing = options.retryMaxRing;
+        retryFromStart(o);
       }
     }
   }

@@ -27,7 +27,8 @@
 /// 5. if flips are left, stages 1-4 again from the composed map with the bounds of
 ///    `retryDistortions`, keeping the best;
 /// 6. if flips next to anchors are left, stages 1-4 once more per such anchor from the map
-///    kept, a disk round the anchor first laid out anew (`anchorRestartRings`);
+///    kept, a disk round the anchor first laid out anew (`anchorRestartRings`); if flips are
+///    still left, stages 1-4 again from the composed map with wider rings (`retryMaxRing`);
 /// 7. on the map kept, up to `polishSweeps` sweeps of single-vertex moves over the whole map,
 ///    each kept only when it lowers E_ang x E_L2^`polishStretchWeight` (`polishProduct`; else
 ///    when it raises neither metric and lowers one) and turns no triangle bad (so the flip count
@@ -103,6 +104,14 @@ struct MapUntangleOptions {
   /// fewest flips, then the lowest E_ang x E_L2^polishStretchWeight, is kept when it leaves
   /// fewer flips than that map. Empty: none; entries below 1 are skipped.
   std::vector<int> anchorRestartRings = {2, 3, 4};
+  /// When flips survive even that, the untangling once more from the composed map with
+  /// `maxRing` widened to this (relaxation and energy reach that far round a flip), with
+  /// `maxDistortion` and then each of `retryDistortions`, until one leaves no flip; kept by the
+  /// same rule (fewer flips, or as few and a lower E_ang x E_L2^polishStretchWeight). For
+  /// folds far from every anchor that 10 rings cannot undo (man -> homer with one edge node:
+  /// the man's fingers, 20-26 rings from an anchor). Not the default `maxRing`: 20 throughout
+  /// moves every bench pair's E_L2, by up to 10 % either way. <= maxRing: never.
+  int retryMaxRing = 20;
 };
 
 /// What `untangleCrossMap` did.
