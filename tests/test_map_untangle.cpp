@@ -484,7 +484,7 @@ TEST(MapUntangle, AnchorRestartSkipsRingCountsBelowOne) {
 TEST(MapUntangle, AFoldWiderThanTheRingsIsUndoneByTheWideRingRetry) {
   // The disk of 8 rings round vertex 0 of an icosphere squeezed into a wedge, the only anchor
   // at the far side: a fold no anchor restart reaches (as the man's fingers on man -> homer,
-  // 20-26 rings from an anchor). With relaxation and energy limited to 2 rings round what is
+  // 18-26 rings from an anchor). With relaxation and energy limited to 2 rings round what is
   // bad (standing for the default 10 at the bench meshes' scale), every stage and retry leaves
   // flips; the retry with wider rings undoes them all. The polish is off, so what moved is the
   // untangling's.

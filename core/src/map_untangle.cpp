@@ -1013,7 +1013,7 @@ MapUntangleResult untangleCrossMap(const IndexedMesh& S, const IndexedMesh& T, c
       }
     }
     // Folds that all that leaves far from every anchor (man -> homer with one edge node: the
-    // man's fingers on homer's stubbier hands, 20-26 rings from the nearest anchor) give way to
+    // man's fingers on homer's stubbier hands, 18-26 rings from the nearest anchor) give way to
     // relaxation and energy over wider rings: the whole untangling once more from the composed
     // map with `retryMaxRing`, with each bound in turn, kept by the same rule.
     if (r.flippedAfter > 0 && options.retryMaxRing > options.maxRing) {

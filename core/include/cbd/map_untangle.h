@@ -109,7 +109,7 @@ struct MapUntangleOptions {
   /// `maxDistortion` and then each of `retryDistortions`, until one leaves no flip; kept by the
   /// same rule (fewer flips, or as few and a lower E_ang x E_L2^polishStretchWeight). For
   /// folds far from every anchor that 10 rings cannot undo (man -> homer with one edge node:
-  /// the man's fingers, 20-26 rings from an anchor). Not the default `maxRing`: 20 throughout
+  /// the man's fingers, 18-26 rings from an anchor). Not the default `maxRing`: 20 throughout
   /// moves every bench pair's E_L2, by up to 10 % either way. <= maxRing: never.
   int retryMaxRing = 20;
 };
