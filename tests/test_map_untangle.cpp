@@ -91,9 +91,10 @@ std::vector<int> ringDistance(const IndexedMesh& m, int v) {
   return d;
 }
 
-/// The identity of `m` with the disk of 3 rings round vertex a squeezed into a wedge: every
+/// The identity of `m` with the disk of `rings` rings round vertex a squeezed into a wedge: every
 /// direction about a at a sixth of its angle, so that a's neighbours all lie on one side of it.
-void squeezeAnchorDisk(const IndexedMesh& m, int a, std::vector<FacePoint>& on, std::vector<Vec3>& image,
+/// Whether a is an anchor is the caller's `fixed`.
+void squeezeDisk(const IndexedMesh& m, int a, std::vector<FacePoint>& on, std::vector<Vec3>& image,
                        int rings = 3) {
   identityMap(m, on, image);
   const std::vector<int> d = ringDistance(m, a);
@@ -130,7 +131,7 @@ void squeezeAnchorDisk(const IndexedMesh& m, int a, std::vector<FacePoint>& on, 
 }
 
 /// An icosphere's identity map with the disk round its anchor (vertex 0, the only fixed vertex)
-/// squeezed into a wedge (`squeezeAnchorDisk`).
+/// squeezed into a wedge (`squeezeDisk`).
 struct FoldedAnchorStar {
   IndexedMesh m = fx::icosphere(3);
   const int a = 0;
@@ -138,7 +139,7 @@ struct FoldedAnchorStar {
   std::vector<Vec3> image;
   std::vector<char> fixed;
   FoldedAnchorStar() : fixed(m.vertexCount(), 0) {
-    squeezeAnchorDisk(m, a, on, image);
+    squeezeDisk(m, a, on, image);
     fixed[a] = 1;
   }
 };
@@ -492,7 +493,7 @@ TEST(MapUntangle, AFoldWiderThanTheRingsIsUndoneByTheWideRingRetry) {
   const int centre = 0, disk = 8;
   std::vector<FacePoint> on0;
   std::vector<Vec3> image0;
-  squeezeAnchorDisk(m, centre, on0, image0, disk);
+  squeezeDisk(m, centre, on0, image0, disk);
   const std::vector<int> d = ringDistance(m, centre);
   const int anchor = static_cast<int>(std::max_element(d.begin(), d.end()) - d.begin());
   std::vector<char> fixed(m.vertexCount(), 0);
