@@ -33,6 +33,17 @@ Vec3 pointOf(const IndexedMesh& m, const FacePoint& p) {
   return p.bary[0] * m.positions[t[0]] + p.bary[1] * m.positions[t[1]] + p.bary[2] * m.positions[t[2]];
 }
 
+/// Whether `image` lies on the target where `p` says: p names a face of m, its barycentric
+/// coordinates are inside it (to rounding), and they give `image`.
+::testing::AssertionResult imageOnItsFace(const IndexedMesh& m, const FacePoint& p, const Vec3& image) {
+  if (p.face < 0 || p.face >= m.faceCount()) return ::testing::AssertionFailure() << "on no face (" << p.face << ")";
+  if (p.bary.minCoeff() < -1e-12)
+    return ::testing::AssertionFailure() << "outside face " << p.face << ": barycentric " << p.bary.transpose();
+  const double off = (pointOf(m, p) - image).norm();
+  if (off >= 1e-12) return ::testing::AssertionFailure() << off << " away from its face point";
+  return ::testing::AssertionSuccess();
+}
+
 /// A bumpy icosphere of the given subdivision level, its identity map, and every `anchorEvery`-th
 /// vertex fixed.
 void bumpyIdentity(int level, int anchorEvery, IndexedMesh& m, std::vector<FacePoint>& on, std::vector<Vec3>& image,
@@ -71,9 +82,7 @@ void expectPolished(const IndexedMesh& m, const std::vector<char>& fixed, const 
   EXPECT_LT(d.eAng, 0.1 * reference.eAng) << what << ": before " << reference.eAng << ", polished " << d.eAng;
   EXPECT_LE(d.eL2, reference.eL2 * (1 + 1e-9)) << what << ": before " << reference.eL2 << ", polished " << d.eL2;
   for (int v = 0; v < m.vertexCount(); ++v) {
-    ASSERT_GE(on[v].face, 0) << what;
-    EXPECT_GE(on[v].bary.minCoeff(), -1e-12) << what;
-    EXPECT_LT((pointOf(m, on[v]) - image[v]).norm(), 1e-12) << what;
+    EXPECT_TRUE(imageOnItsFace(m, on[v], image[v])) << what << ": vertex " << v;
     if (fixed[v]) EXPECT_EQ(image[v], before[v]) << what << ": anchor " << v << " moved";
   }
 }
@@ -275,10 +284,8 @@ TEST(MapUntangle, FoldedVerticesAreUntangledOnTheSurfaceWithAnchorsFixed) {
   }
   int farUnchanged = 0, far = 0;
   for (int v = 0; v < m.vertexCount(); ++v) {
-    ASSERT_GE(on[v].face, 0);
-    EXPECT_GE(on[v].bary.minCoeff(), -1e-12);
+    EXPECT_TRUE(imageOnItsFace(m, on[v], image[v])) << "vertex " << v;
     EXPECT_NEAR(on[v].bary.sum(), 1.0, 1e-12);
-    EXPECT_LT((pointOf(m, on[v]) - image[v]).norm(), 1e-12);
     if (fixed[v]) EXPECT_EQ(image[v], thrownImage[v]) << "anchor " << v << " moved";
     if (nearest[v] > 12) ++far, farUnchanged += image[v] == thrownImage[v];
   }
@@ -387,7 +394,7 @@ TEST(MapUntangle, AnAnchorDiskFoldedIntoAWedgeIsLaidOutAnew) {
   for (int v = 0; v < m.vertexCount(); ++v) {
     if (d[v] >= 1 && d[v] <= 3) EXPECT_LT((image1[v] - m.positions[v]).norm(), 0.25 * edge) << "vertex " << v;
     if (d[v] > 3) EXPECT_EQ(image1[v], image[v]) << "vertex " << v << " outside the disk moved";
-    EXPECT_LT((pointOf(m, on1[v]) - image1[v]).norm(), 1e-12);
+    EXPECT_TRUE(imageOnItsFace(m, on1[v], image1[v])) << "vertex " << v;
   }
   // The anchor's neighbours wind once round its image again.
   double winding = 0;
@@ -435,7 +442,7 @@ TEST(MapUntangle, AnAnchorDiskRestartLeavesAnotherAnchorsNeighbourhoodInPlace) {
       continue;
     }
     moved += image1[v] != image[v];
-    EXPECT_LT((pointOf(m, on1[v]) - image1[v]).norm(), 1e-12);
+    EXPECT_TRUE(imageOnItsFace(m, on1[v], image1[v])) << "vertex " << v;
   }
   EXPECT_GT(moved, 0) << "a's own side of the disk was not laid out";
   // Laid out anew from the identity, nothing is turned over, b's fan included.
@@ -525,9 +532,7 @@ TEST(MapUntangle, AFoldWiderThanTheRingsIsUndoneByTheWideRingRetry) {
   // Every image on the surface; the anchor and what lies beyond the fold's reach untouched.
   int beyond = 0;
   for (int v = 0; v < m.vertexCount(); ++v) {
-    ASSERT_GE(on[v].face, 0);
-    EXPECT_GE(on[v].bary.minCoeff(), -1e-12);
-    EXPECT_LT((pointOf(m, on[v]) - image[v]).norm(), 1e-12);
+    EXPECT_TRUE(imageOnItsFace(m, on[v], image[v])) << "vertex " << v;
     if (d[v] <= disk + o.retryMaxRing + 2) continue;
     ++beyond;
     EXPECT_EQ(image[v], image0[v]) << "vertex " << v << " moved";
