@@ -273,11 +273,42 @@ TargetLayoutResult buildTargetLayout(const Layout& src, const IndexedMesh& targe
     return notNow();
   };
 
+  // The anchors whose clusters each source path runs through besides its own two: the faces on
+  // both sides of the path, by their source cluster.
+  std::vector<std::vector<int>> passedAnchors(ne);
+  if (options.waitForPassedAnchors && src.faceCluster.size() == static_cast<size_t>(src.mesh.faceCount())) {
+    for (int e = 0; e < ne; ++e) {
+      const LayoutEdge& se = src.edges[e];
+      std::set<int> passed;
+      for (size_t k = 0; k + 1 < se.vertices.size(); ++k) {
+        const int h = src.mesh.findHalfedge(se.vertices[k], se.vertices[k + 1]);
+        for (const int f : {src.mesh.face(h), src.mesh.face(RefinedMesh::twin(h))}) {
+          const int c = src.faceCluster[f];
+          if (c >= 0 && c != se.a && c != se.b) passed.insert(c);
+        }
+      }
+      passedAnchors[e].assign(passed.begin(), passed.end());
+    }
+  }
+  std::vector<int> pathsAt(na, 0);  // target paths embedded at each anchor
+  std::vector<char> waited(ne, 0);
+  auto waitsForPassedAnchor = [&](int e) {
+    for (const int c : passedAnchors[e])
+      if (pathsAt[c] == 0) return true;
+    return false;
+  };
+
   bool force = false;
   while (!pending.empty()) {
     bool progress = false;
     for (size_t k = 0; k < pending.size();) {
       const int e = pending[k];
+      if (!force && waitsForPassedAnchor(e)) {
+        ++r.postponements;
+        if (!waited[e]) waited[e] = 1, ++r.waitedForPassedAnchors;
+        ++k;
+        continue;
+      }
       if (!force && ambiguous(e)) {
         ++r.postponements;
         ++k;
@@ -291,6 +322,7 @@ TargetLayoutResult buildTargetLayout(const Layout& src, const IndexedMesh& targe
         continue;
       }
       embedded[e] = 1;
+      ++pathsAt[src.edges[e].a], ++pathsAt[src.edges[e].b];
       setSourceEdge(e, e);
       pending.erase(pending.begin() + static_cast<long>(k));
       progress = true;
