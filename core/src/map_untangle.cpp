@@ -977,7 +977,9 @@ MapUntangleResult untangleCrossMap(const IndexedMesh& S, const IndexedMesh& T, c
     // corner angles far apart), no move of one neighbour undoes it, and relaxations with the
     // anchor fixed inside keep the wedge. The untangling is run again from the kept map with the
     // anchor's neighbours laid out round it anew (reembedStar), kept when fewer flips are left.
-    if (r.flippedAfter > 0 && !options.anchorRestartRings.empty()) {
+    // `o`: the options of the untangling after each restart.
+    auto restartAtAnchors = [&](const MapUntangleOptions& o) {
+      if (r.flippedAfter == 0 || options.anchorRestartRings.empty()) return;
       std::vector<int> anchors;
       for (const auto& t : S.faces) {
         if (!flippedFace(t, onTarget, image)) continue;
@@ -999,7 +1001,7 @@ MapUntangleResult untangleCrossMap(const IndexedMesh& S, const IndexedMesh& T, c
           std::vector<FacePoint> on = keptOn;
           std::vector<Vec3> x = keptImage;
           if (!reembedStar(S, stars, walker, fixed, a, rings, on, x)) continue;
-          const MapUntangleResult t = untangleOnce(S, T, walker, stars, fixed, on, x, options);
+          const MapUntangleResult t = untangleOnce(S, T, walker, stars, fixed, on, x, o);
           ++r.attempts;
           const int left = flips(on, x);
           if (left > bestLeft || (left == bestLeft && bestLeft == r.flippedAfter)) continue;
@@ -1011,7 +1013,8 @@ MapUntangleResult untangleCrossMap(const IndexedMesh& S, const IndexedMesh& T, c
         if (bestLeft < r.flippedAfter) r.moves += best.moves, r.degenerateAfter = best.degenerateAfter;
         r.flippedAfter = bestLeft;
       }
-    }
+    };
+    restartAtAnchors(options);
     // Folds that all that leaves far from every anchor (man -> homer with one edge node: the
     // man's fingers on homer's stubbier hands, 18-26 rings from the nearest anchor) give way to
     // relaxation and energy over wider rings: the whole untangling once more from the composed
@@ -1027,6 +1030,11 @@ MapUntangleResult untangleCrossMap(const IndexedMesh& S, const IndexedMesh& T, c
         o.maxRing = options.retryMaxRing;
         retryFromStart(o);
       }
+      // A star that the wide rings left folded (what they kept may not be what the restarts
+      // above started from): the restarts again, untangling with the wide rings.
+      MapUntangleOptions o = options;
+      o.maxRing = options.retryMaxRing;
+      restartAtAnchors(o);
     }
   }
   // The polish, once, on the map kept: it never turns a triangle bad, so the flip count cannot

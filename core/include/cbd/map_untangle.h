@@ -28,7 +28,8 @@
 ///    `retryDistortions`, keeping the best;
 /// 6. if flips next to anchors are left, stages 1-4 once more per such anchor from the map
 ///    kept, a disk round the anchor first laid out anew (`anchorRestartRings`); if flips are
-///    still left, stages 1-4 again from the composed map with wider rings (`retryMaxRing`);
+///    still left, stages 1-4 again from the composed map with wider rings (`retryMaxRing`),
+///    then, for flips next to anchors, the anchor restarts once more with those wider rings;
 /// 7. on the map kept, up to `polishSweeps` sweeps of single-vertex moves over the whole map,
 ///    each kept only when it lowers E_ang x E_L2^`polishStretchWeight` (`polishProduct`; else
 ///    when it raises neither metric and lowers one) and turns no triangle bad (so the flip count
@@ -110,7 +111,10 @@ struct MapUntangleOptions {
   /// same rule (fewer flips, or as few and a lower E_ang x E_L2^polishStretchWeight). For
   /// folds far from every anchor that 10 rings cannot undo (man -> homer with one edge node:
   /// the man's fingers, 18-26 rings from an anchor). Not the default `maxRing`: 20 throughout
-  /// moves every bench pair's E_L2, by up to 10 % either way. <= maxRing: never.
+  /// moves every bench pair's E_L2, by up to 10 % either way. After it, flips next to anchors
+  /// get the anchor restarts once more, untangled with these rings (man -> homer-70 with the
+  /// paths waiting for passed anchors, `TargetLayoutOptions`: a star folded against a bundle of
+  /// three paths that leave the anchor within 6 degrees, 1 flip left without). <= maxRing: never.
   int retryMaxRing = 20;
 };
 
