@@ -204,6 +204,7 @@ json layoutJson(const cbd::LayoutPair& p) {
     l["target"] = {{"in_clusters", p.targetStats.embeddedInClusters},
                    {"in_region", p.targetStats.embeddedInRegion},
                    {"postponements", p.targetStats.postponements},
+                   {"waited_for_passed_anchors", p.targetStats.waitedForPassedAnchors},
                    {"rejected_paths", p.targetStats.rejectedPaths}};
   } else {
     const auto& g = p.greedyStats;

@@ -282,7 +282,9 @@ TargetLayoutResult buildTargetLayout(const Layout& src, const IndexedMesh& targe
       std::set<int> passed;
       for (size_t k = 0; k + 1 < se.vertices.size(); ++k) {
         const int h = src.mesh.findHalfedge(se.vertices[k], se.vertices[k + 1]);
+        if (h < 0) continue;  // not a layout validateLayout accepts; the tracing reports it
         for (const int f : {src.mesh.face(h), src.mesh.face(RefinedMesh::twin(h))}) {
+          if (f < 0) continue;
           const int c = src.faceCluster[f];
           if (c >= 0 && c != se.a && c != se.b) passed.insert(c);
         }
