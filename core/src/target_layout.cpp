@@ -286,7 +286,7 @@ TargetLayoutResult buildTargetLayout(const Layout& src, const IndexedMesh& targe
         for (const int f : {src.mesh.face(h), src.mesh.face(RefinedMesh::twin(h))}) {
           if (f < 0) continue;
           const int c = src.faceCluster[f];
-          if (c >= 0 && c != se.a && c != se.b) passed.insert(c);
+          if (c >= 0 && c < na && c != se.a && c != se.b) passed.insert(c);
         }
       }
       passedAnchors[e].assign(passed.begin(), passed.end());
