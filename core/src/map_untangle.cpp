@@ -1021,20 +1021,19 @@ MapUntangleResult untangleCrossMap(const IndexedMesh& S, const IndexedMesh& T, c
     // map with `retryMaxRing`, with each bound in turn, kept by the same rule.
     if (r.flippedAfter > 0 && options.retryMaxRing > options.maxRing) {
       bestScore = productOf(S, image, options.polishStretchWeight);
+      MapUntangleOptions wide = options;
+      wide.maxRing = options.retryMaxRing;
       std::vector<double> bounds{options.maxDistortion};
       bounds.insert(bounds.end(), options.retryDistortions.begin(), options.retryDistortions.end());
       for (const double bound : bounds) {
         if (r.flippedAfter == 0) break;
-        MapUntangleOptions o = options;
+        MapUntangleOptions o = wide;
         o.maxDistortion = bound;
-        o.maxRing = options.retryMaxRing;
         retryFromStart(o);
       }
       // A star that the wide rings left folded (what they kept may not be what the restarts
       // above started from): the restarts again, untangling with the wide rings.
-      MapUntangleOptions o = options;
-      o.maxRing = options.retryMaxRing;
-      restartAtAnchors(o);
+      restartAtAnchors(wide);
     }
   }
   // The polish, once, on the map kept: it never turns a triangle bad, so the flip count cannot

@@ -292,13 +292,17 @@ TargetLayoutResult buildTargetLayout(const Layout& src, const IndexedMesh& targe
       passedAnchors[e].assign(passed.begin(), passed.end());
     }
   }
-  std::vector<int> pathsAt(na, 0);  // target paths embedded at each anchor
-  std::vector<char> waited(ne, 0);
-  auto waitsForPassedAnchor = [&](int e) {
-    for (const int c : passedAnchors[e])
-      if (pathsAt[c] == 0) return true;
+  auto hasTargetPath = [&](int a) {
+    for (const int x : src.rotation[a])
+      if (embedded[x]) return true;
     return false;
   };
+  auto waitsForPassedAnchor = [&](int e) {
+    for (const int c : passedAnchors[e])
+      if (!hasTargetPath(c)) return true;
+    return false;
+  };
+  std::vector<char> waited(ne, 0);
 
   bool force = false;
   while (!pending.empty()) {
@@ -324,7 +328,6 @@ TargetLayoutResult buildTargetLayout(const Layout& src, const IndexedMesh& targe
         continue;
       }
       embedded[e] = 1;
-      ++pathsAt[src.edges[e].a], ++pathsAt[src.edges[e].b];
       setSourceEdge(e, e);
       pending.erase(pending.begin() + static_cast<long>(k));
       progress = true;
