@@ -30,10 +30,11 @@
 ///    kept, a disk round the anchor first laid out anew (`anchorRestartRings`); if flips are
 ///    still left, stages 1-4 again from the composed map with wider rings (`retryMaxRing`),
 ///    then, for flips next to anchors, the anchor restarts once more with those wider rings;
-/// 7. on the map kept, up to `polishSweeps` sweeps of single-vertex moves over the whole map,
-///    each kept only when it lowers E_ang x E_L2^`polishStretchWeight` (`polishProduct`; else
-///    when it raises neither metric and lowers one) and turns no triangle bad (so the flip count
-///    cannot grow); stops when a sweep gains less than `polishTolerance`.
+/// 7. on the map kept, up to `polishSweeps` sweeps of single-vertex moves over the whole map:
+///    of a vertex's candidates (half way to its neighbours' mean-value average, steps along the
+///    steepest descent) the one that lowers E_ang x E_L2^`polishStretchWeight` most
+///    (`polishProduct`; else that raises neither metric and lowers one) and turns no triangle
+///    bad (so the flip count cannot grow); stops when a sweep gains less than `polishTolerance`.
 /// Stages 1-6 run only when the map has flipped triangles; the polish runs on every map, so a
 /// composed map that happens to have no flip is polished like one that has. A map without angle
 /// distortion but for rounding (the identity) is returned unchanged.
