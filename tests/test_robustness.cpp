@@ -2,6 +2,9 @@
 // determinism across runs and thread counts.
 #include <gtest/gtest.h>
 
+#include <string>
+#include <tuple>
+
 #include "cbd/anchor_sampling.h"
 #include "cbd/pipeline.h"
 #include "support/fixtures.h"
@@ -9,42 +12,43 @@
 
 using namespace cbd;
 
-// One test per genus: each is a full pipeline run per anchor set, and under the sanitizers
-// the three together exceed one test's timeout.
-class StressGenus : public ::testing::TestWithParam<int> {};
+// One test per genus and seed: each is a full pipeline run per anchor set, and under the
+// sanitizers one genus's three seeds together come near one test's timeout.
+class StressGenus : public ::testing::TestWithParam<std::tuple<int, unsigned>> {};
 
 TEST_P(StressGenus, RandomAnchorsEitherSucceedWithAllInvariantsOrFailTyped) {
-  {
-    const int genus = GetParam();
-    const stress::SyntheticPair pair = stress::makePair(genus);
-    int ok = 0, runs = 0;
-    for (int count : {4 + 2 * genus, 9, 17, 33}) {
-      for (unsigned seed = 1; seed <= 3; ++seed) {
-        for (bool farthest : {true, false}) {
-          SCOPED_TRACE(pair.name + ", " + std::to_string(count) + " anchors, seed " + std::to_string(seed) +
-                       (farthest ? " farthest" : " random"));
-          const auto sa = stress::randomAnchors(pair.source, count, seed * 7919u + count, farthest);
-          const stress::Outcome o = stress::run(pair, sa);
-          ++runs;
-          if (o.code == ErrorCode::AnchorsShareVertex) continue;  // the synthetic transfer merged two
-          if (o.ok) {
-            ++ok;
-            EXPECT_TRUE(o.invariantsHold);
-          } else {
-            // A clear, typed failure and nothing else.
-            EXPECT_TRUE(o.code == ErrorCode::LayoutFailed || o.code == ErrorCode::TooFewAnchors) << o.message;
-            EXPECT_FALSE(o.message.empty());
-          }
-        }
+  const auto [genus, seed] = GetParam();
+  const stress::SyntheticPair pair = stress::makePair(genus);
+  int ok = 0, runs = 0;
+  for (int count : {4 + 2 * genus, 9, 17, 33}) {
+    for (bool farthest : {true, false}) {
+      SCOPED_TRACE(pair.name + ", " + std::to_string(count) + " anchors, seed " + std::to_string(seed) +
+                   (farthest ? " farthest" : " random"));
+      const auto sa = stress::randomAnchors(pair.source, count, seed * 7919u + count, farthest);
+      const stress::Outcome o = stress::run(pair, sa);
+      ++runs;
+      if (o.code == ErrorCode::AnchorsShareVertex) continue;  // the synthetic transfer merged two
+      if (o.ok) {
+        ++ok;
+        EXPECT_TRUE(o.invariantsHold);
+      } else {
+        // A clear, typed failure and nothing else.
+        EXPECT_TRUE(o.code == ErrorCode::LayoutFailed || o.code == ErrorCode::TooFewAnchors) << o.message;
+        EXPECT_FALSE(o.message.empty());
       }
     }
-    RecordProperty("success_genus_" + std::to_string(genus), std::to_string(ok) + "/" + std::to_string(runs));
-    // Well-spread (farthest-point) anchor sets of moderate size must work on every genus.
-    EXPECT_GT(ok, runs / 3) << pair.name;
   }
+  RecordProperty("success_genus_" + std::to_string(genus) + "_seed_" + std::to_string(seed),
+                 std::to_string(ok) + "/" + std::to_string(runs));
+  // Well-spread (farthest-point) anchor sets of moderate size must work on every genus.
+  EXPECT_GT(ok, runs / 3) << pair.name;
 }
 
-INSTANTIATE_TEST_SUITE_P(Stress, StressGenus, ::testing::Values(0, 1, 2));
+INSTANTIATE_TEST_SUITE_P(Stress, StressGenus, ::testing::Combine(::testing::Values(0, 1, 2), ::testing::Values(1u, 2u, 3u)),
+                         [](const ::testing::TestParamInfo<StressGenus::ParamType>& info) {
+                           return "genus" + std::to_string(std::get<0>(info.param)) + "_seed" +
+                                  std::to_string(std::get<1>(info.param));
+                         });
 
 TEST(Determinism, SameInputSameOutputAcrossRunsAndThreadCounts) {
   const stress::SyntheticPair pair = stress::makePair(0);
