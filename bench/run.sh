@@ -11,14 +11,10 @@
 # Usage: bench/run.sh [--quick]     (--quick: fewer scaling points and stress sets, one polish order)
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
-usage() { sed -n 's/^# Usage: //p' "${BASH_SOURCE[0]}"; }
+. "$ROOT/scripts/args.sh"
 QUICK=0
-case "$#:${1:-}" in
-  0:) ;;
-  1:--quick) QUICK=1 ;;
-  1:-h | 1:--help) usage; exit 0 ;;
-  *) echo "bench/run.sh: unknown arguments: $* (it takes only --quick; see --help)" >&2; usage >&2; exit 2 ;;
-esac
+if [ "${1:-}" = "--quick" ]; then QUICK=1; shift; fi
+cbd_args 0 "$@"
 "$ROOT/scripts/setup.sh" >/dev/null
 "$ROOT/scripts/build.sh" "$ROOT/build" >/dev/null
 B="$ROOT/build/bench/cbd_bench"

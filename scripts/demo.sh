@@ -4,6 +4,7 @@
 # Usage: scripts/demo.sh [OUT_DIR]   (default: out/bull_cow)
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+. "$ROOT/scripts/args.sh"; cbd_args 1 "$@"
 OUT="${1:-$ROOT/out/bull_cow}"
 "$ROOT/scripts/setup.sh"
 "$ROOT/scripts/build.sh" "$ROOT/build"

@@ -5,6 +5,7 @@
 # Usage: scripts/figures.sh   (runs scripts/demo.sh first when its outputs are missing)
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+. "$ROOT/scripts/args.sh"; cbd_args 0 "$@"
 OUT="$ROOT/out/bull_cow"
 [ -f "$OUT/mst.ply" ] || "$ROOT/scripts/demo.sh" "$OUT"
 R="$ROOT/build/bench/render/cbd_render"

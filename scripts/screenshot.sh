@@ -12,6 +12,7 @@ set -uo pipefail
 
 NAME="screenshot"
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+. "$ROOT/scripts/args.sh"; cbd_args 1 "$@"
 OUT="${1:-$ROOT/docs/meshlab_cbd.png}"
 die() { printf '[%s] error: %s\n' "$NAME" "$*" >&2; exit 1; }
 info() { printf '[%s] %s\n' "$NAME" "$*"; }

@@ -10,6 +10,7 @@
 set -euo pipefail
 
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+. "$ROOT/scripts/args.sh"; cbd_args 0 "$@"
 THIRD="$ROOT/third_party"
 
 log() { printf '[setup] %s\n' "$*"; }

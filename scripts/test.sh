@@ -9,6 +9,7 @@
 # Usage: scripts/test.sh            (as root on Debian 12; idempotent)
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+. "$ROOT/scripts/args.sh"; cbd_args 0 "$@"
 FUZZ_RUNS="${FUZZ_RUNS:-600000}"
 "$ROOT/scripts/setup.sh"
 
