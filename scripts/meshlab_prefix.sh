@@ -26,8 +26,9 @@ set -euo pipefail
 log() { printf '[meshlab_prefix] %s\n' "$*"; }
 die() { printf '[meshlab_prefix] error: %s\n' "$*" >&2; exit 1; }
 
-if [ $# -lt 1 ] || [ $# -gt 2 ]; then die "usage: $0 PREFIX [PLUGIN_SO]"; fi
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+. "$ROOT/scripts/args.sh"; cbd_args 2 "$@"
+if [ $# -lt 1 ]; then die "usage: $0 PREFIX [PLUGIN_SO]"; fi
 PREFIX="$1"
 PLUGIN_SO="${2:-}"
 ML_BIN="${MESHLAB_BIN_DIR:-/usr/bin}"
