@@ -201,6 +201,7 @@ json layoutJson(const cbd::LayoutPair& p) {
     l["cut_paths"] = p.sourceStats.cutPaths;
     l["triangulation_paths"] = p.sourceStats.triangulationPaths;
     l["removed_paths"] = p.sourceStats.removedPaths;
+    l["rejected_paths"] = p.sourceStats.rejectedPaths;
     l["target"] = {{"in_clusters", p.targetStats.embeddedInClusters},
                    {"in_region", p.targetStats.embeddedInRegion},
                    {"postponements", p.targetStats.postponements},
@@ -280,7 +281,8 @@ int runSingleLayout(const RunArgs& a) {
   if (cbd::Status s = cbd::writeLayout(r.layout, a.out); !s) return finish(s, j, a.jsonPath);
   j["layout"] = {{"edges", r.layout.edges.size()},       {"patches", r.layout.patches.size()},
                  {"multi_linkages", r.layout.multipleLinkages()}, {"cut_paths", r.cutPaths},
-                 {"triangulation_paths", r.triangulationPaths},   {"removed_paths", r.removedPaths}};
+                 {"triangulation_paths", r.triangulationPaths},   {"removed_paths", r.removedPaths},
+                 {"rejected_paths", r.rejectedPaths}};
   j["timing_s"]["total"] = elapsed(t0);
   std::printf("source  %s: %d vertices, %d faces, genus %d, %zu anchors\n", a.mesh.c_str(), rep.vertices, rep.faces,
               rep.genus, anchors.size());

@@ -11,6 +11,7 @@
 #include "cbd/source_layout.h"
 #include "cbd/validate_input.h"
 #include "support/fixtures.h"
+#include "support/stress.h"
 
 using namespace cbd;
 namespace fx = cbd::fixtures;
@@ -18,9 +19,9 @@ namespace fx = cbd::fixtures;
 namespace {
 
 
-// Farthest-point sampling of n vertices (deterministic, starting at vertex 0).
-std::vector<int> farthestPoints(const IndexedMesh& m, int n) {
-  std::vector<int> out{0};
+// Farthest-point sampling of n vertices (deterministic, starting at vertex `start`).
+std::vector<int> farthestPoints(const IndexedMesh& m, int n, int start = 0) {
+  std::vector<int> out{start};
   std::vector<double> d(m.vertexCount(), 1e300);
   while (static_cast<int>(out.size()) < n) {
     const Vec3 p = m.positions[out.back()];
@@ -153,6 +154,49 @@ TEST(SourceLayout, DoubleTorus) {
   const std::vector<int> anchors = farthestPoints(m, 16);
   const SourceLayoutResult r = buildSourceLayout(m, anchors);
   expectValid(r, m, 16);
+}
+
+TEST(SourceLayout, DoubleTorusWithFewAnchorsCutsOffNoDiskOfTwoAlternatingAnchors) {
+  // With 4 to 8 anchors on a double torus the shortest diagonal of a region can cut off a disk
+  // whose corners alternate between two anchors (a b a b): every diagonal of that one would
+  // join an anchor to itself, and each of these layouts failed so. Such diagonals are not taken.
+  struct Case {
+    int smooth, anchors, start;
+  };
+  for (const Case c : {Case{10, 4, 0}, Case{10, 4, 100}, Case{20, 4, 7}, Case{10, 6, 7}, Case{10, 8, 0}}) {
+    SCOPED_TRACE("smooth " + std::to_string(c.smooth) + ", " + std::to_string(c.anchors) + " anchors from vertex " +
+                 std::to_string(c.start));
+    const IndexedMesh m = fx::holedPlate(2, 4, c.smooth);
+    ASSERT_EQ(validateMesh(m, "dt").genus, 2);
+    const SourceLayoutResult r = buildSourceLayout(m, farthestPoints(m, c.anchors, c.start));
+    expectValid(r, m, c.anchors);
+    EXPECT_EQ(r.removedPaths, 0);
+  }
+}
+
+TEST(SourceLayout, ALinkAlongASideOfAHandleRegionIsTakenBackNotRetracedForever) {
+  // A region with a handle and three corners, all adjacent: the shortest link between two of
+  // them runs along their side and cuts off an empty 2-gon, whose removal undid the link; traced
+  // again and again, it split ever more edges (the refined mesh grew 1.6-fold per round, to
+  // 24 GB). The link is taken back once and not tried again.
+  const stress::SyntheticPair pair = stress::makePair(2);
+  const int inputFaces = pair.source.faceCount();
+  {
+    // 5 random anchors: after one link taken back the region has another link, and the layout
+    // completes (it ran out of time before).
+    const SourceLayoutResult r = buildSourceLayout(pair.source, stress::randomAnchors(pair.source, 5, 100098, false));
+    expectValid(r, pair.source, 5);
+    EXPECT_GE(r.rejectedPaths, 1);
+  }
+  {
+    // 4 random anchors: a region left with a handle between two paths of the same two anchors
+    // has no link that is not taken back, and the layout fails (it ran out of memory before).
+    const SourceLayoutResult r = buildSourceLayout(pair.source, stress::randomAnchors(pair.source, 4, 100314, false));
+    EXPECT_EQ(r.status.code, ErrorCode::LayoutFailed);
+    EXPECT_NE(r.status.message.find("add anchors there"), std::string::npos) << r.status.message;
+    EXPECT_GE(r.rejectedPaths, 1);
+    EXPECT_LT(r.layout.mesh.faceCount(), 3 * inputFaces);
+  }
 }
 
 TEST(SourceLayout, ManyAnchorsOnASphere) {

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <limits>
 #include <numeric>
+#include <set>
 
 namespace cbd {
 namespace {
@@ -23,6 +24,36 @@ struct PathSet {
     return static_cast<int>(edges.size()) - 1;
   }
 };
+
+/// Distinct anchors among the `count` corners from position `from` on, cyclically.
+int distinctAnchors(const std::vector<int>& corners, int from, size_t count) {
+  std::vector<int> seen;
+  for (size_t k = 0; k < count; ++k) seen.push_back(corners[(from + k) % corners.size()]);
+  std::sort(seen.begin(), seen.end());
+  return static_cast<int>(std::unique(seen.begin(), seen.end()) - seen.begin());
+}
+
+/// Whether a region with no anchor inside can never be cut into triangles: an empty 2-gon, or
+/// a disk whose corners alternate between two anchors (every diagonal would join an anchor to
+/// itself).
+bool deadRegion(const Region& reg) {
+  if (!reg.interiorAnchors.empty() || reg.loops.size() != 1 || reg.eulerCharacteristic != 1) return false;
+  const auto& corners = reg.loops[0].corners;
+  return corners.size() == 2 || (corners.size() >= 4 && distinctAnchors(corners, 0, corners.size()) == 2);
+}
+
+/// Whether the path just cut in along `chain` cuts off a dead region on either side.
+bool cutsOffDeadPiece(const RefinedMesh& mesh, const std::vector<int>& edgePath, const std::vector<int>& anchorOf,
+                      const std::vector<int>& chain, RegionScratch& scratch) {
+  if (chain.size() < 2) return false;
+  const int h = mesh.findHalfedge(chain[0], chain[1]);
+  if (h < 0) return false;
+  std::vector<int> faces;
+  const int left = mesh.face(h), right = mesh.face(RefinedMesh::twin(h));
+  if (deadRegion(regionAt(mesh, edgePath, anchorOf, left, scratch, faces))) return true;
+  if (std::find(faces.begin(), faces.end(), right) != faces.end()) return false;  // one piece
+  return deadRegion(regionAt(mesh, edgePath, anchorOf, right, scratch, faces));
+}
 
 }  // namespace
 
@@ -93,6 +124,8 @@ SourceLayoutResult buildSourceLayout(const IndexedMesh& input, const std::vector
   // in the order of their lowest face, as a fresh analysis would number them.
   RegionMap rm;
   RegionScratch scratch;
+  // Links taken back in the region being triangulated (pairs of `endKey`s, both orders).
+  std::set<std::pair<int, int>> triedLinks;
   bool analyzed = false;
   int bad = -1;
   for (int iteration = 0;; ++iteration) {
@@ -127,6 +160,7 @@ SourceLayoutResult buildSourceLayout(const IndexedMesh& input, const std::vector
       paths.alive[drop] = 0;
       ++r.removedPaths;
       analyzed = false;  // two regions merged
+      triedLinks.clear();
       continue;
     }
     // Candidate links: (source anchor + wedge) -> goals (anchor + wedge).
@@ -149,8 +183,24 @@ SourceLayoutResult buildSourceLayout(const IndexedMesh& input, const std::vector
       const int m = static_cast<int>(reg.loops[s.loop].corners.size());
       const int d = std::abs(s.pos - g.pos);
       const bool adjacent = d == 1 || d == m - 1;
-      if (disk || strict) return !adjacent;                // a diagonal of the polygon
+      if (adjacent && (disk || strict)) return false;
+      // A diagonal of a disk must not cut off a polygon whose corners alternate between two
+      // anchors (a b a b ...): that one would have no diagonal left. (Two such diagonals are
+      // all that 4 farthest-point anchors on a double torus left, and the layout failed.)
+      if (disk) {
+        const auto& corners = reg.loops[s.loop].corners;
+        auto dead = [&](int from, int to) {
+          const int n = (to - from + m) % m + 1;
+          return n >= 4 && distinctAnchors(corners, from, n) == 2;
+        };
+        return !dead(s.pos, g.pos) && !dead(g.pos, s.pos);
+      }
       return true;                                         // a region with a handle
+    };
+    // An end's identity across the re-analyses of this region: its outgoing loop halfedge (a
+    // path edge, never split), or the anchor for an interior one.
+    auto endKey = [&](const End& x) {
+      return x.loop >= 0 ? reg.loops[x.loop].cornerHalfedge[x.pos] : -1 - x.anchor;
     };
     TracedPath best;
     int bestSource = -1;
@@ -166,7 +216,7 @@ SourceLayoutResult buildSourceLayout(const IndexedMesh& input, const std::vector
         q.sourceFaces = s.faces;
         q.filter = {&rm.faceRegion, bad, bad};
         for (size_t gi = 0; gi < ends.size(); ++gi)
-          if (gi != si && linkable(s, ends[gi], strict))
+          if (gi != si && linkable(s, ends[gi], strict) && !triedLinks.count({endKey(s), endKey(ends[gi])}))
             q.goals.push_back({anchors[ends[gi].anchor], ends[gi].faces, static_cast<int>(gi)});
         if (q.goals.empty()) continue;
         // Only a shorter link can win. The margin leaves ties (a link and its reverse, equal up
@@ -195,6 +245,21 @@ SourceLayoutResult buildSourceLayout(const IndexedMesh& input, const std::vector
       r.status = s;
       return r;
     }
+    // A link that cuts off a piece no path can ever make a triangle (an empty 2-gon, whose
+    // removal would only undo the link, or a disk whose corners alternate between two anchors)
+    // is taken back and not tried again in this region: in a region with a handle, the shortest
+    // link between two of its corners can run along a side, and re-tracing it forever grew the
+    // refined mesh without bound (a double torus with 4 random anchors: 24 GB).
+    refreshAnchorOf();
+    if (cutsOffDeadPiece(L.mesh, tracer.edgePath(), anchorOf, paths.edges[id].vertices, scratch)) {
+      tracer.release(paths.edges[id].vertices, id);
+      paths.alive[id] = 0;
+      ++r.rejectedPaths;
+      triedLinks.insert({endKey(ends[bestSource]), endKey(ends[best.goal])});
+      triedLinks.insert({endKey(ends[best.goal]), endKey(ends[bestSource])});
+      continue;  // the same region again (with the faces the link's splits added)
+    }
+    triedLinks.clear();
     ++r.triangulationPaths;
   }
 
