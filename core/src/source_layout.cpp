@@ -33,16 +33,18 @@ int distinctAnchors(const std::vector<int>& corners, int from, size_t count) {
   return static_cast<int>(std::unique(seen.begin(), seen.end()) - seen.begin());
 }
 
-/// Whether a region with no anchor inside can never be cut into triangles: an empty 2-gon, or
-/// a disk whose corners alternate between two anchors (every diagonal would join an anchor to
-/// itself).
+/// Whether a region can never be cut into triangles: no anchor inside and at most two distinct
+/// anchors on its boundary (an empty 2-gon, a disk whose corners alternate a b a b, a handle
+/// between paths of the same two anchors): every path in it would join those two, and every
+/// piece would again have only those two for corners.
 bool deadRegion(const Region& reg) {
-  if (!reg.interiorAnchors.empty() || reg.loops.size() != 1 || reg.eulerCharacteristic != 1) return false;
-  const auto& corners = reg.loops[0].corners;
-  return corners.size() == 2 || (corners.size() >= 4 && distinctAnchors(corners, 0, corners.size()) == 2);
+  if (!reg.interiorAnchors.empty()) return false;
+  std::vector<int> corners;
+  for (const auto& l : reg.loops) corners.insert(corners.end(), l.corners.begin(), l.corners.end());
+  return !corners.empty() && distinctAnchors(corners, 0, corners.size()) <= 2;
 }
 
-/// Whether the path just cut in along `chain` cuts off a dead region on either side.
+/// Whether the path just cut in along `chain` leaves a dead region on either side.
 bool cutsOffDeadPiece(const RefinedMesh& mesh, const std::vector<int>& edgePath, const std::vector<int>& anchorOf,
                       const std::vector<int>& chain, RegionScratch& scratch) {
   if (chain.size() < 2) return false;
@@ -245,8 +247,8 @@ SourceLayoutResult buildSourceLayout(const IndexedMesh& input, const std::vector
       r.status = s;
       return r;
     }
-    // A link that cuts off a piece no path can ever make a triangle (an empty 2-gon, whose
-    // removal would only undo the link, or a disk whose corners alternate between two anchors)
+    // A link that leaves a piece no path can ever make a triangle (an empty 2-gon, whose removal
+    // would only undo the link, or any region with only two anchors for corners and none inside)
     // is taken back and not tried again in this region: in a region with a handle, the shortest
     // link between two of its corners can run along a side, and re-tracing it forever grew the
     // refined mesh without bound (a double torus with 4 random anchors: 24 GB).

@@ -29,8 +29,9 @@ struct SourceLayoutResult {
   int cutPathsFailed = 0;        ///< cuts no path could cross (left to the triangulation)
   int triangulationPaths = 0;    ///< paths added to triangulate regions
   int removedPaths = 0;          ///< paths removed because they bounded an empty 2-gon
-  /// Triangulation paths taken back as soon as they were traced, because they cut off a piece
-  /// no path can triangulate (not counted in `triangulationPaths`).
+  /// Triangulation paths taken back as soon as they were traced, because they left a piece no
+  /// path can triangulate (two anchors for corners, none inside; not counted in
+  /// `triangulationPaths`).
   int rejectedPaths = 0;
   double voronoiSeconds = 0.0;
   double layoutSeconds = 0.0;    ///< cuts, paths and triangulation
