@@ -152,15 +152,57 @@ std::string expand(std::string p, const fs::path& root) {
   return p;
 }
 
+/// The pairs of `manifest` (lines "name source target source_anchors target_anchors", '#'
+/// comments), their paths expanded against `root`. False when the manifest cannot be read.
+bool readManifest(const fs::path& root, const std::string& manifest, std::vector<Pair>& pairs) {
+  std::ifstream in(manifest);
+  if (!in) {
+    std::fprintf(stderr, "cbd_bench: cannot read manifest '%s'\n", manifest.c_str());
+    return false;
+  }
+  std::string line;
+  while (std::getline(in, line)) {
+    if (line.empty() || line[0] == '#') continue;
+    std::istringstream ls(line);
+    Pair p;
+    ls >> p.name >> p.source >> p.target >> p.sourceAnchors >> p.targetAnchors;
+    p.source = expand(p.source, root), p.target = expand(p.target, root);
+    p.sourceAnchors = expand(p.sourceAnchors, root), p.targetAnchors = expand(p.targetAnchors, root);
+    pairs.push_back(p);
+  }
+  return true;
+}
+
+/// A pair loaded and validated, with its anchors as vertex indices.
+struct LoadedPair {
+  LoadedInput input;
+  std::vector<int> sourceAnchors, targetAnchors;
+};
+
+/// Loads and validates `p` into `lp`: an empty string, or why the pair cannot run.
+std::string loadPair(const Pair& p, LoadedPair& lp) {
+  if (!fs::exists(p.source) || !fs::exists(p.target)) return "skipped: input not present";
+  loadAndValidate({p.source, p.target, p.sourceAnchors, p.targetAnchors}, {}, lp.input);
+  if (!lp.input.report.status) return "invalid input: " + lp.input.report.status.message;
+  for (const auto& a : lp.input.report.anchors.source) lp.sourceAnchors.push_back(a.vertex);
+  for (const auto& a : lp.input.report.anchors.target) lp.targetAnchors.push_back(a.vertex);
+  return {};
+}
+
+/// The whole pipeline on a loaded pair with options `o`, in a child process of its own.
+Run runPair(const LoadedPair& lp, const CrossParameterizationOptions& o) {
+  return forked([&] {
+    return runPipeline(lp.input.source, lp.sourceAnchors, lp.input.target, lp.targetAnchors,
+                       lp.input.report.source.eulerCharacteristic, o, false);
+  });
+}
+
 /// `orders` polish orders per default run of greedy and Voronoi C: the default (index order)
 /// and orders - 1 seeded permutations (MapUntangleOptions::polishOrderSeed), each its own run,
 /// written to OUTDIR/table_orders.csv.
 int table(const fs::path& root, const std::string& manifest, const fs::path& out, int orders) {
-  std::ifstream in(manifest);
-  if (!in) {
-    std::fprintf(stderr, "cbd_bench: cannot read manifest '%s'\n", manifest.c_str());
-    return 1;
-  }
+  std::vector<Pair> pairs;
+  if (!readManifest(root, manifest, pairs)) return 1;
   fs::create_directories(out);
   std::ofstream csv(out / "table.csv"), md(out / "table.md"), ocsv(out / "table_orders.csv");
   ocsv << "pair,method,order_seed,status,e_ang,e_l2,flipped,t_total,error\n";
@@ -174,34 +216,19 @@ int table(const fs::path& root, const std::string& manifest, const fs::path& out
          "t_total,peak_mb,flipped_before_untangle,e_ang_composed,e_l2_composed,t_straighten,error\n";
   md << "| pair | V src / tgt | anchors | method | E_ang | E_L2 | flipped | layout s | total s | peak MB | note |\n"
         "|---|---|---|---|---|---|---|---|---|---|---|\n";
-  std::string line;
   std::vector<std::string> speedups;
-  while (std::getline(in, line)) {
-    if (line.empty() || line[0] == '#') continue;
-    std::istringstream ls(line);
-    Pair p;
-    ls >> p.name >> p.source >> p.target >> p.sourceAnchors >> p.targetAnchors;
-    p.source = expand(p.source, root), p.target = expand(p.target, root);
-    p.sourceAnchors = expand(p.sourceAnchors, root), p.targetAnchors = expand(p.targetAnchors, root);
-    if (!fs::exists(p.source) || !fs::exists(p.target)) {
-      md << "| " << p.name << " | | | | | | | | | | skipped: input not present |\n";
-      std::printf("%-24s skipped (input not present)\n", p.name.c_str());
+  for (const Pair& p : pairs) {
+    LoadedPair lp;
+    if (const std::string why = loadPair(p, lp); !why.empty()) {
+      md << "| " << p.name << " | | | | | | | | | | " << why << " |\n";
+      std::printf("%-24s %s\n", p.name.c_str(), why.c_str());
       continue;
     }
-    LoadedInput li;
-    loadAndValidate({p.source, p.target, p.sourceAnchors, p.targetAnchors}, {}, li);
-    if (!li.report.status) {
-      md << "| " << p.name << " | | | | | | | | | | invalid input: " << li.report.status.message << " |\n";
-      continue;
-    }
-    std::vector<int> sa, ta;
-    for (const auto& a : li.report.anchors.source) sa.push_back(a.vertex);
-    for (const auto& a : li.report.anchors.target) ta.push_back(a.vertex);
+    const LoadedInput& li = lp.input;
+    const std::vector<int>& sa = lp.sourceAnchors;
     std::map<std::string, Run> runs;
     for (const Method& m : methods()) {
-      const Run r = forked([&] {
-        return runPipeline(li.source, sa, li.target, ta, li.report.source.eulerCharacteristic, m.options, false);
-      });
+      const Run r = runPair(lp, m.options);
       runs[m.name] = r;
       char row[1024];
       std::snprintf(row, sizeof row, "| %s | %d / %d | %zu | %s | %s | %s | %s | %.3f | %.3f | %.0f | %s |\n",
@@ -231,9 +258,7 @@ int table(const fs::path& root, const std::string& manifest, const fs::path& out
       for (int seed = 1; seed < orders; ++seed) {
         CrossParameterizationOptions o = m.options;
         o.untangling.polishOrderSeed = static_cast<std::uint64_t>(seed);
-        const Run r = forked([&] {
-          return runPipeline(li.source, sa, li.target, ta, li.report.source.eulerCharacteristic, o, false);
-        });
+        const Run r = runPair(lp, o);
         orderRow(p.name, m.name, seed, r);
         std::printf("%-22s %-16s polish order %d: %s E_ang %.3f E_L2 %.3f flipped %d total %.3fs %s\n", p.name.c_str(),
                     m.name.c_str(), seed, r.ok ? "ok    " : "FAILED", r.eAng, r.eL2, r.flipped, r.tTotal,
@@ -253,6 +278,42 @@ int table(const fs::path& root, const std::string& manifest, const fs::path& out
   for (const auto& s : speedups) md << s << '\n';
   std::printf("wrote %s, %s and %s\n", (out / "table.csv").c_str(), (out / "table.md").c_str(),
               (out / "table_orders.csv").c_str());
+  return 0;
+}
+
+/// The default runs of greedy and Voronoi C once more with each of `rounds` rounds of path
+/// straightening (MapUntangleOptions and everything else as cbd's defaults): how far the final
+/// map moves with a post-processing setting that both methods share, against the difference
+/// between the methods. -> OUTDIR/sensitivity.csv.
+int sensitivity(const fs::path& root, const std::string& manifest, const fs::path& out, const std::vector<int>& rounds) {
+  std::vector<Pair> pairs;
+  if (!readManifest(root, manifest, pairs)) return 1;
+  fs::create_directories(out);
+  std::ofstream csv(out / "sensitivity.csv");
+  csv << "pair,method,straighten_rounds,status,e_ang,e_l2,flipped,e_ang_composed,e_l2_composed,t_total,error\n";
+  for (const Pair& p : pairs) {
+    LoadedPair lp;
+    if (const std::string why = loadPair(p, lp); !why.empty()) {
+      std::printf("%-24s %s\n", p.name.c_str(), why.c_str());
+      continue;
+    }
+    for (const Method& m : methods()) {
+      if (m.name != "greedy" && m.name != "voronoi-C") continue;
+      for (int k : rounds) {
+        CrossParameterizationOptions o = m.options;
+        o.straightening.rounds = k;
+        const Run r = runPair(lp, o);
+        csv << p.name << ',' << m.name << ',' << k << ',' << (r.ok ? "ok" : "failed") << ',' << r.eAng << ',' << r.eL2
+            << ',' << r.flipped << ',' << r.eAngRaw << ',' << r.eL2Raw << ',' << r.tTotal << ",\"" << r.error << "\"\n";
+        csv.flush();
+        std::printf("%-22s %-10s straighten %d: %s E_ang %.3f E_L2 %.3f flipped %d (composed %.3f %.3f) total %.1fs %s\n",
+                    p.name.c_str(), m.name.c_str(), k, r.ok ? "ok    " : "FAILED", r.eAng, r.eL2, r.flipped, r.eAngRaw,
+                    r.eL2Raw, r.tTotal, r.ok ? "" : r.error.c_str());
+        std::fflush(stdout);
+      }
+    }
+  }
+  std::printf("wrote %s\n", (out / "sensitivity.csv").c_str());
   return 0;
 }
 
@@ -412,6 +473,14 @@ int stressRuns(const fs::path& out, int setsPerCount, const std::vector<int>& co
   return 0;
 }
 
+/// "8,16,32" -> {8, 16, 32}.
+std::vector<int> intList(const char* s) {
+  std::vector<int> out;
+  std::stringstream ss(s);
+  for (std::string x; std::getline(ss, x, ',');) out.push_back(std::stoi(x));
+  return out;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -421,6 +490,7 @@ int main(int argc, char** argv) {
                  "usage: cbd_bench table ROOT MANIFEST OUTDIR [ORDERS]\n"
                  "       cbd_bench scaling MESH OUTDIR MAX_SUBDIVISION_LEVEL N1,N2,...\n"
                  "       cbd_bench stress OUTDIR SETS_PER_COUNT N1,N2,...\n"
+                 "       cbd_bench sensitivity ROOT MANIFEST OUTDIR R1,R2,...\n"
                  "table: for every pair of the manifest, the greedy baseline and the Voronoi method (E1: one\n"
                  "edge node per edge; C: adaptive) -> OUTDIR/table.csv, OUTDIR/table.md; greedy and C also\n"
                  "with ORDERS - 1 (default 2) more seeded polish vertex orders -> OUTDIR/table_orders.csv.\n"
@@ -428,22 +498,21 @@ int main(int argc, char** argv) {
                  "with one full Dijkstra sweep of the edge-node graph as the lower bound -> OUTDIR/scaling.csv;\n"
                  "with a subdivision level > 0, also the whole pipeline at the largest size -> OUTDIR/full.csv.\n"
                  "stress: random and farthest-point anchor sets on synthetic genus 0/1/2 pairs, both methods\n"
-                 "-> OUTDIR/stress.csv, OUTDIR/stress.md.\n");
+                 "-> OUTDIR/stress.csv, OUTDIR/stress.md.\n"
+                 "sensitivity: greedy and Voronoi C on every pair of the manifest with each of R1, R2, ...\n"
+                 "rounds of path straightening -> OUTDIR/sensitivity.csv.\n");
     return 2;
   };
   (void)root;
   if (argc >= 5 && std::strcmp(argv[1], "table") == 0) return table(argv[2], argv[3], argv[4], argc >= 6 ? std::max(1, std::atoi(argv[5])) : 3);
   if (argc >= 6 && std::strcmp(argv[1], "scaling") == 0) {
-    std::vector<int> counts;
-    std::stringstream ss(argv[5]);
-    for (std::string x; std::getline(ss, x, ',');) counts.push_back(std::stoi(x));
-    return scaling(argv[2], argv[3], std::stoi(argv[4]), counts);
+    return scaling(argv[2], argv[3], std::stoi(argv[4]), intList(argv[5]));
   }
   if (argc >= 5 && std::strcmp(argv[1], "stress") == 0) {
-    std::vector<int> counts;
-    std::stringstream ss(argv[4]);
-    for (std::string x; std::getline(ss, x, ',');) counts.push_back(std::stoi(x));
-    return stressRuns(argv[2], std::stoi(argv[3]), counts);
+    return stressRuns(argv[2], std::stoi(argv[3]), intList(argv[4]));
+  }
+  if (argc >= 6 && std::strcmp(argv[1], "sensitivity") == 0) {
+    return sensitivity(argv[2], argv[3], argv[4], intList(argv[5]));
   }
   return usage();
 }

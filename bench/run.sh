@@ -2,13 +2,14 @@
 # The benchmark, from scratch, in one command: builds, then runs on this machine
 #   1. the comparison table (paper's Table 2): every pair of bench/manifest.txt with the greedy
 #      baseline and the Voronoi method in its E1 (one edge node) and C (adaptive) settings;
-#      greedy and C also with two more polish vertex orders (the spread of the final numbers);
+#      greedy and C also with two more polish vertex orders (the spread of the final numbers),
+#      and with 1, 4 and 8 rounds of path straightening besides the default 2 (sensitivity);
 #   2. scaling: layout time against anchors (on diplodocus) and against mesh size (the cow
 #      subdivided 1-to-4), both methods, next to one full Dijkstra sweep of the edge-node graph;
 #   3. random-anchor stress on synthetic genus 0/1/2 pairs;
 #   4. plots (gnuplot) and renders (cbd_render), and bench/README.md with every number from
 #      this run.
-# Usage: bench/run.sh [--quick]     (--quick: fewer scaling points and stress sets, one polish order)
+# Usage: bench/run.sh [--quick]   (--quick: fewer scaling points and stress sets, one polish order, no straightening sensitivity)
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 . "$ROOT/scripts/args.sh"
@@ -26,6 +27,13 @@ MESHES="$ROOT/third_party/cgal-data/meshes"
 echo "== table"
 if [ "$QUICK" = 1 ]; then ORDERS=1; else ORDERS=3; fi
 "$B" table "$ROOT" "$ROOT/bench/manifest.txt" "$OUT" "$ORDERS" | tee "$OUT/table.log"
+
+if [ "$QUICK" = 0 ]; then
+  echo "== sensitivity to the straightening"
+  "$B" sensitivity "$ROOT" "$ROOT/bench/manifest.txt" "$OUT" 1,4,8 | tee "$OUT/sensitivity.log"
+else
+  rm -f "$OUT/sensitivity.csv"  # not this run's: the report must not mix runs
+fi
 
 echo "== scaling"
 if [ "$QUICK" = 1 ]; then COUNTS=8,16,32; LEVELS=2; else COUNTS=8,16,32,64,128; LEVELS=3; fi
