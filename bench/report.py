@@ -190,13 +190,11 @@ def md_sensitivity():
             lines.append(f"| {p} | failed run(s) | | | | | | | | |")
             continue
         n_pairs += 1
-        def lower(key):
-            if key == 'both':
-                return sum(lower_at(k, 'e_ang') and lower_at(k, 'e_l2') for k in ks)
-            return sum(lower_at(k, key) for k in ks)
         def lower_at(k, key):
+            if key == 'both':
+                return lower_at(k, 'e_ang') and lower_at(k, 'e_l2')
             return float(by[k]['voronoi-C'][key]) < float(by[k]['greedy'][key])
-        counts = {key: lower(key) for key in keys}
+        counts = {key: sum(lower_at(k, key) for k in ks) for key in keys}
         for key in keys:
             every[key] += counts[key] == len(ks)
         cells = []
