@@ -129,6 +129,10 @@ def md_speedup(suffix=''):
     lines.append("| **pairs where Voronoi C is lower** | | | | | " + ' | '.join(f"{x} of {n}" for x in wins) + " |")
     return '\n'.join(lines)
 
+def span(xs):
+    """'lo – hi' of a method's values over runs that differ only in a shared setting."""
+    return f'{min(xs):.3f} – {max(xs):.3f}'
+
 def md_orders():
     """Greedy against Voronoi C over the polish's vertex orders: the range of each method's final
     E_ang and E_L2, and whether Voronoi C is lower in every order (its worst below greedy's best),
@@ -154,7 +158,7 @@ def md_orders():
             c = [float(r[k]) for r in runs['voronoi-C']]
             verdict = 0 if max(c) < min(g) else 2 if min(c) > max(g) else 1
             tally[k][verdict] += 1
-            cells += [f'{min(g):.3f} – {max(g):.3f}', f'{min(c):.3f} – {max(c):.3f}',
+            cells += [span(g), span(c),
                       ['in every order', 'in some orders', 'in no order'][verdict]]
         lines.append(f"| {p} | " + ' | '.join(cells) + ' |')
     t = lambda k: f"every order {tally[k][0]}, some {tally[k][1]}, none {tally[k][2]}"
@@ -201,7 +205,7 @@ def md_sensitivity():
         for key in ('e_ang', 'e_l2'):
             g = [float(by[k]['greedy'][key]) for k in ks]
             c = [float(by[k]['voronoi-C'][key]) for k in ks]
-            cells += [f'{min(g):.3f} – {max(g):.3f}', f'{min(c):.3f} – {max(c):.3f}', f'{counts[key]} of {len(ks)}']
+            cells += [span(g), span(c), f'{counts[key]} of {len(ks)}']
         cells += [f"{counts['both']} of {len(ks)}", f"{counts['e_ang_composed']} / {counts['e_l2_composed']} of {len(ks)}"]
         worst = lambda m: max(int(by[k][m]['flipped']) for k in ks)
         lines.append(f"| {p} | " + ' | '.join(cells) + f" | {worst('greedy')} / {worst('voronoi-C')} |")
