@@ -16,10 +16,14 @@
 #include <functional>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <map>
+#include <queue>
 #include <sstream>
 #include <string>
 #include <vector>
+
+#include <Eigen/Dense>
 
 #include "cbd/anchor_sampling.h"
 #include "cbd/pipeline.h"
@@ -317,6 +321,175 @@ int sensitivity(const fs::path& root, const std::string& manifest, const fs::pat
   return 0;
 }
 
+/// Each source face's share of a map's E_ang and of E_L2^2 (`computeDistortion`'s terms, so
+/// the shares of all faces sum to the metrics; degenerate image triangles count 0 there and here).
+struct FaceShares {
+  std::vector<double> ang, l2sq;
+};
+
+FaceShares faceShares(const IndexedMesh& s, const std::vector<Vec3>& image) {
+  const int nf = s.faceCount();
+  FaceShares out{std::vector<double>(nf, 0.0), std::vector<double>(nf, 0.0)};
+  Vec3 lo = Vec3::Constant(1e300), hi = -lo;
+  for (const Vec3& p : image) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+  const double diag2 = (hi - lo).squaredNorm();
+  // A triangle in its own plane: columns e1, e2 in an orthonormal frame of that plane.
+  // (computeDistortion's frame: a zero edge or normal falls back to a unit axis.)
+  auto planar = [](const Vec3& p0, const Vec3& p1, const Vec3& p2) {
+    const Vec3 a = p1 - p0, b = p2 - p0;
+    const double la = a.norm();
+    const Vec3 x = la > 0 ? Vec3(a / la) : Vec3::UnitX();
+    const Vec3 n = a.cross(b);
+    const Vec3 y = n.norm() > 0 ? Vec3(n.cross(x).normalized()) : Vec3::UnitY();
+    Eigen::Matrix2d m;
+    m << la, b.dot(x), 0.0, b.dot(y);
+    return m;
+  };
+  double sumAs = 0, sumAt = 0;
+  std::vector<double> at(nf, 0.0);
+  for (int f = 0; f < nf; ++f) {
+    const auto& t = s.faces[f];
+    const Vec3 &s0 = s.positions[t[0]], &s1 = s.positions[t[1]], &s2 = s.positions[t[2]];
+    const Vec3 &i0 = image[t[0]], &i1 = image[t[1]], &i2 = image[t[2]];
+    const double as = 0.5 * (s1 - s0).cross(s2 - s0).norm();
+    at[f] = 0.5 * (i1 - i0).cross(i2 - i0).norm();
+    if (at[f] <= 1e-12 * diag2) continue;
+    const Eigen::Matrix2d J = planar(i0, i1, i2) * planar(s0, s1, s2).inverse();
+    const Eigen::Vector2d sv = Eigen::JacobiSVD<Eigen::Matrix2d>(J).singularValues();
+    const double a = sv[0], b = std::max(sv[1], 1e-300);
+    sumAs += as, sumAt += at[f];
+    out.ang[f] = as * (0.5 * (a / b + b / a) - 1.0);
+    out.l2sq[f] = at[f] * 0.5 * (a * a + b * b);
+  }
+  for (int f = 0; f < nf; ++f) out.ang[f] /= sumAs, out.l2sq[f] *= sumAs / (sumAt * sumAt);
+  return out;
+}
+
+/// The source's faces by their geodesically nearest anchor (multi-source Dijkstra over the
+/// edges; a face goes to the anchor nearest to its centroid through one of its corners): the
+/// same regions for both methods, whatever their layouts.
+std::vector<int> nearestAnchorRegions(const IndexedMesh& s, const std::vector<int>& anchors) {
+  const int nv = s.vertexCount();
+  std::vector<std::vector<int>> nbr(nv);
+  for (const auto& t : s.faces)
+    for (int k = 0; k < 3; ++k) nbr[t[k]].push_back(t[(k + 1) % 3]), nbr[t[(k + 1) % 3]].push_back(t[k]);
+  std::vector<double> dist(nv, std::numeric_limits<double>::infinity());
+  std::vector<int> from(nv, -1);
+  using Item = std::pair<double, int>;
+  std::priority_queue<Item, std::vector<Item>, std::greater<Item>> q;
+  for (size_t i = 0; i < anchors.size(); ++i) {
+    dist[anchors[i]] = 0, from[anchors[i]] = static_cast<int>(i);
+    q.push({0.0, anchors[i]});
+  }
+  while (!q.empty()) {
+    const auto [d, v] = q.top();
+    q.pop();
+    if (d > dist[v]) continue;
+    for (int w : nbr[v]) {
+      const double nd = d + (s.positions[w] - s.positions[v]).norm();
+      if (nd < dist[w]) dist[w] = nd, from[w] = from[v], q.push({nd, w});
+    }
+  }
+  std::vector<int> region(s.faceCount(), -1);
+  for (int f = 0; f < s.faceCount(); ++f) {
+    const auto& t = s.faces[f];
+    const Vec3 c = (s.positions[t[0]] + s.positions[t[1]] + s.positions[t[2]]) / 3.0;
+    double best = std::numeric_limits<double>::infinity();
+    for (int v : t) {
+      const double d = dist[v] + (c - s.positions[v]).norm();
+      if (from[v] >= 0 && d < best) best = d, region[f] = from[v];
+    }
+  }
+  return region;
+}
+
+/// Where on the source the maps of greedy and Voronoi C differ: per pair of the manifest, both
+/// methods with cbd's defaults and once more as composed (untangling off: what the base domains
+/// and patch maps give), in this process as the per-face terms are needed; each face's share of
+/// E_ang and of E_L2^2 summed over the region of its nearest anchor -> OUTDIR/regions.csv. The
+/// shares are checked to add up to each run's metrics, which are the table's (same options).
+int regions(const fs::path& root, const std::string& manifest, const fs::path& out) {
+  std::vector<Pair> pairs;
+  if (!readManifest(root, manifest, pairs)) return 1;
+  fs::create_directories(out);
+  std::ofstream csv(out / "regions.csv");
+  // Column order: metric x stage x method, as `sums` is indexed below.
+  const char* metric[2] = {"e_ang", "e_l2sq"};
+  const char* stage[2] = {"", "_composed"};
+  const char* method[2] = {"greedy", "voronoi_c"};
+  csv << "pair,anchor,name,faces,area_share";
+  for (int st = 0; st < 2; ++st)
+    for (int me = 0; me < 2; ++me)
+      for (int m = 0; m < 2; ++m) csv << ',' << metric[me] << '_' << method[m] << stage[st];
+  csv << '\n';
+  csv.precision(10);
+  for (const Pair& p : pairs) {
+    LoadedPair lp;
+    if (const std::string why = loadPair(p, lp); !why.empty()) {
+      std::printf("%-24s %s\n", p.name.c_str(), why.c_str());
+      continue;
+    }
+    const IndexedMesh& s = lp.input.source;
+    const std::vector<int> region = nearestAnchorRegions(s, lp.sourceAnchors);
+    const int na = static_cast<int>(lp.sourceAnchors.size());
+    std::vector<double> faces(na, 0), area(na, 0);
+    std::vector<std::vector<double>> sums(8, std::vector<double>(na, 0.0));  // [stage][metric][method]
+    double totalArea = 0;
+    bool ok = true;
+    for (const Method& m : methods()) {
+      const int mi = m.name == "greedy" ? 0 : m.name == "voronoi-C" ? 1 : -1;
+      if (mi < 0) continue;
+      for (int st = 0; st < 2 && ok; ++st) {
+        CrossParameterizationOptions o = m.options;
+        o.untangle = st == 0;
+        const CrossParameterizationResult c = crossParameterize(s, lp.sourceAnchors, lp.input.target, lp.targetAnchors,
+                                                                lp.input.report.source.eulerCharacteristic, o);
+        if (!c.status.ok()) {
+          std::printf("%-22s %-10s FAILED %s\n", p.name.c_str(), m.name.c_str(), c.status.message.c_str());
+          ok = false;
+          break;
+        }
+        const FaceShares shares = faceShares(s, c.map.sourceImage);
+        double ang = 0, l2sq = 0;
+        for (int f = 0; f < s.faceCount(); ++f) {
+          ang += shares.ang[f], l2sq += shares.l2sq[f];
+          if (region[f] < 0) continue;  // no anchor on its component
+          sums[4 * st + mi][region[f]] += shares.ang[f];
+          sums[4 * st + 2 + mi][region[f]] += shares.l2sq[f];
+        }
+        std::printf("%-22s %-10s %-8s E_ang %.4f (faces: %.4f) E_L2 %.4f (faces: %.4f)\n", p.name.c_str(),
+                    m.name.c_str(), st ? "composed" : "final", c.metrics.eAng, ang, c.metrics.eL2, std::sqrt(l2sq));
+        std::fflush(stdout);
+        // The shares must add up to the metrics the table reports, else the regions mean nothing.
+        if (std::abs(ang - c.metrics.eAng) > 1e-6 * std::max(1.0, c.metrics.eAng) ||
+            std::abs(std::sqrt(l2sq) - c.metrics.eL2) > 1e-6 * c.metrics.eL2) {
+          std::printf("%-22s the per-face shares do not add up to the metrics\n", p.name.c_str());
+          return 1;
+        }
+      }
+      if (!ok) break;
+    }
+    if (!ok) continue;
+    for (int f = 0; f < s.faceCount(); ++f) {
+      const auto& t = s.faces[f];
+      const double a = 0.5 * (s.positions[t[1]] - s.positions[t[0]]).cross(s.positions[t[2]] - s.positions[t[0]]).norm();
+      totalArea += a;
+      if (region[f] >= 0) faces[region[f]] += 1, area[region[f]] += a;
+    }
+    for (int i = 0; i < na; ++i) {
+      std::string name = lp.input.report.anchors.source[i].name;
+      for (char& ch : name)
+        if (ch == ',' || ch == '"') ch = '_';
+      csv << p.name << ',' << i << ',' << name << ',' << faces[i] << ',' << area[i] / totalArea;
+      for (const auto& v : sums) csv << ',' << v[i];
+      csv << '\n';
+    }
+    csv.flush();
+  }
+  std::printf("wrote %s\n", (out / "regions.csv").c_str());
+  return 0;
+}
+
 /// 1-to-4 midpoint subdivision (the same shape at four times the faces).
 IndexedMesh subdivide(const IndexedMesh& m) {
   IndexedMesh out = m;
@@ -491,6 +664,7 @@ int main(int argc, char** argv) {
                  "       cbd_bench scaling MESH OUTDIR MAX_SUBDIVISION_LEVEL N1,N2,...\n"
                  "       cbd_bench stress OUTDIR SETS_PER_COUNT N1,N2,...\n"
                  "       cbd_bench sensitivity ROOT MANIFEST OUTDIR R1,R2,...\n"
+                 "       cbd_bench regions ROOT MANIFEST OUTDIR\n"
                  "table: for every pair of the manifest, the greedy baseline and the Voronoi method (E1: one\n"
                  "edge node per edge; C: adaptive) -> OUTDIR/table.csv, OUTDIR/table.md; greedy and C also\n"
                  "with ORDERS - 1 (default 2) more seeded polish vertex orders -> OUTDIR/table_orders.csv.\n"
@@ -500,7 +674,10 @@ int main(int argc, char** argv) {
                  "stress: random and farthest-point anchor sets on synthetic genus 0/1/2 pairs, both methods\n"
                  "-> OUTDIR/stress.csv, OUTDIR/stress.md.\n"
                  "sensitivity: greedy and Voronoi C on every pair of the manifest with each of R1, R2, ...\n"
-                 "rounds of path straightening -> OUTDIR/sensitivity.csv.\n");
+                 "rounds of path straightening -> OUTDIR/sensitivity.csv.\n"
+                 "regions: greedy and Voronoi C (defaults, and as composed: no untangling) on every pair of the\n"
+                 "manifest, each source face's share of E_ang and of E_L2^2 summed per region of its nearest\n"
+                 "anchor -> OUTDIR/regions.csv.\n");
     return 2;
   };
   (void)root;
@@ -514,5 +691,6 @@ int main(int argc, char** argv) {
   if (argc >= 6 && std::strcmp(argv[1], "sensitivity") == 0) {
     return sensitivity(argv[2], argv[3], argv[4], intList(argv[5]));
   }
+  if (argc >= 5 && std::strcmp(argv[1], "regions") == 0) return regions(argv[2], argv[3], argv[4]);
   return usage();
 }

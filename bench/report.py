@@ -24,6 +24,7 @@ methods = ['greedy', 'voronoi-E1', 'voronoi-C']
 full = rows(os.path.join(out, 'scaling_size', 'full.csv'))
 orders = rows(os.path.join(out, 'table_orders.csv'))
 sens = rows(os.path.join(out, 'sensitivity.csv'))
+regs = rows(os.path.join(out, 'regions.csv'))
 
 def fit(points):
     """Least-squares exponent k of t = c * x^k over (x, t) with t > 0."""
@@ -214,6 +215,38 @@ def md_sensitivity():
                  f"{every['e_ang_composed']} / {every['e_l2_composed']} of {n_pairs} | |")
     return f"Rounds of straightening: {', '.join(str(k) for k in settings)} (2 is cbd's default, 0 the paths as traced).\n\n" + '\n'.join(lines)
 
+def md_regions():
+    """Per pair and metric, greedy's and Voronoi C's final value as the sum of the source regions'
+    shares (regions.csv: faces by nearest anchor), the difference, and the three regions where
+    Voronoi C's share exceeds greedy's most and the three where it falls short most, each with
+    the same difference as composed (before untangling). The sums are checked against
+    table.csv's default runs: a regions.csv from other code is not shown."""
+    if not regs:
+        return '(not in this run: `bench/run.sh` without `--quick` runs it)'
+    by = {}
+    for r in regs:
+        by.setdefault(r['pair'], []).append(r)
+    final = {(r['pair'], r['method']): r for r in table}
+    lines = ['| pair | metric | greedy | Voronoi C | C − greedy (composed) | where C is higher most (composed) | where C is lower most (composed) |',
+             '|---|---|---|---|---|---|---|']
+    for p, rs in by.items():
+        for metric, key, col in (('E_ang', 'e_ang', 'e_ang'), ('E_L2²', 'e_l2sq', 'e_l2')):
+            def total(m, stage=''):
+                return sum(float(r[f'{key}_{m}{stage}']) for r in rs)
+            for m, tm in (('greedy', 'greedy'), ('voronoi_c', 'voronoi-C')):
+                t = final.get((p, tm))
+                for stage, tcol in (('', col), ('_composed', col + '_composed')):
+                    ref = float(t[tcol]) ** (2 if col == 'e_l2' else 1) if t and t['status'] == 'ok' else None
+                    if ref is None or abs(total(m, stage) - ref) > 1e-4 * max(1.0, ref):
+                        return f'(regions.csv does not add up to table.csv for {p} {tm}: not from the same code; re-run both)'
+            diff = lambda r, stage='': float(r[f'{key}_voronoi_c{stage}']) - float(r[f'{key}_greedy{stage}'])
+            d = sorted(rs, key=diff)
+            fmt = lambda xs: ', '.join(f"{r['name']} {diff(r):+.4f} ({diff(r, '_composed'):+.4f})" for r in xs)
+            g, c = total('greedy'), total('voronoi_c')
+            dc = total('voronoi_c', '_composed') - total('greedy', '_composed')
+            lines.append(f'| {p} | {metric} | {g:.4f} | {c:.4f} | {c - g:+.4f} ({dc:+.4f}) | {fmt(d[::-1][:3])} | {fmt(d[:3])} |')
+    return '\n'.join(lines)
+
 def md_scaling(data, xcol):
     if not data:
         return '(not run)'
@@ -274,8 +307,8 @@ script and can be re-run alone. Reproduce everything from scratch with
 bash bench/run.sh
 ```
 
-(`--quick` for fewer scaling points and stress sets, one polish order and no straightening
-sensitivity). Inputs: `bench/manifest.txt` (real pairs
+(`--quick` for fewer scaling points and stress sets, one polish order, and neither the
+straightening sensitivity nor the regions). Inputs: `bench/manifest.txt` (real pairs
 only: the bundled cow/bull in both directions, SHREC'07 381 -> 382 with its 21 landmarks when
 `../shared/data` is present, and pairs of Debian libcgal-demo meshes with the anchors in
 `bench/anchors/`). Every method runs on the same input in the same invocation; each run is a
@@ -346,6 +379,19 @@ untangling and polish start. The same pairs with other numbers of rounds
 Where the two methods' ranges overlap, a difference between them at cbd's default (the table at
 the top) is no larger than what a setting both methods share moves. The composed columns compare
 the base domains and patch maps alone, before any untangling.
+
+## Where on the source the two methods' maps differ
+
+E_ang and E_L2² are sums over the source's faces (E_ang: source area × angle distortion over
+the total area; E_L2²: image area × (σ1² + σ2²)/2, normalised). `cbd_bench regions` runs greedy
+and Voronoi C once more with cbd's defaults, in one process so that every face's share is at
+hand, and sums the shares per region of the source: the faces geodesically nearest to each
+anchor (the same regions for both methods); in brackets, the same as composed (the runs once
+more with the untangling off: the base domains and patch maps alone). The regions' sums are the
+table's metrics (checked here), so a difference between the methods splits into where it comes
+from, and whether it was there before the untangling:
+
+{md_regions()}
 
 ## The same with the paths as traced (the paper's protocol)
 
