@@ -23,8 +23,6 @@
 #include <string>
 #include <vector>
 
-#include <Eigen/Dense>
-
 #include "cbd/anchor_sampling.h"
 #include "cbd/pipeline.h"
 #include "cbd/validate_input.h"
@@ -321,50 +319,6 @@ int sensitivity(const fs::path& root, const std::string& manifest, const fs::pat
   return 0;
 }
 
-/// Each source face's share of a map's E_ang and of E_L2^2 (`computeDistortion`'s terms, so
-/// the shares of all faces sum to the metrics; degenerate image triangles count 0 there and here).
-struct FaceShares {
-  std::vector<double> ang, l2sq;
-};
-
-FaceShares faceShares(const IndexedMesh& s, const std::vector<Vec3>& image) {
-  const int nf = s.faceCount();
-  FaceShares out{std::vector<double>(nf, 0.0), std::vector<double>(nf, 0.0)};
-  Vec3 lo = Vec3::Constant(1e300), hi = -lo;
-  for (const Vec3& p : image) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
-  const double diag2 = (hi - lo).squaredNorm();
-  // A triangle in its own plane: columns e1, e2 in an orthonormal frame of that plane.
-  // (computeDistortion's frame: a zero edge or normal falls back to a unit axis.)
-  auto planar = [](const Vec3& p0, const Vec3& p1, const Vec3& p2) {
-    const Vec3 a = p1 - p0, b = p2 - p0;
-    const double la = a.norm();
-    const Vec3 x = la > 0 ? Vec3(a / la) : Vec3::UnitX();
-    const Vec3 n = a.cross(b);
-    const Vec3 y = n.norm() > 0 ? Vec3(n.cross(x).normalized()) : Vec3::UnitY();
-    Eigen::Matrix2d m;
-    m << la, b.dot(x), 0.0, b.dot(y);
-    return m;
-  };
-  double sumAs = 0, sumAt = 0;
-  std::vector<double> at(nf, 0.0);
-  for (int f = 0; f < nf; ++f) {
-    const auto& t = s.faces[f];
-    const Vec3 &s0 = s.positions[t[0]], &s1 = s.positions[t[1]], &s2 = s.positions[t[2]];
-    const Vec3 &i0 = image[t[0]], &i1 = image[t[1]], &i2 = image[t[2]];
-    const double as = 0.5 * (s1 - s0).cross(s2 - s0).norm();
-    at[f] = 0.5 * (i1 - i0).cross(i2 - i0).norm();
-    if (at[f] <= 1e-12 * diag2) continue;
-    const Eigen::Matrix2d J = planar(i0, i1, i2) * planar(s0, s1, s2).inverse();
-    const Eigen::Vector2d sv = Eigen::JacobiSVD<Eigen::Matrix2d>(J).singularValues();
-    const double a = sv[0], b = std::max(sv[1], 1e-300);
-    sumAs += as, sumAt += at[f];
-    out.ang[f] = as * (0.5 * (a / b + b / a) - 1.0);
-    out.l2sq[f] = at[f] * 0.5 * (a * a + b * b);
-  }
-  for (int f = 0; f < nf; ++f) out.ang[f] /= sumAs, out.l2sq[f] *= sumAs / (sumAt * sumAt);
-  return out;
-}
-
 /// The source's faces by their geodesically nearest anchor (multi-source Dijkstra over the
 /// edges; a face goes to the anchor nearest to its centroid through one of its corners): the
 /// same regions for both methods, whatever their layouts.
@@ -449,13 +403,14 @@ int regions(const fs::path& root, const std::string& manifest, const fs::path& o
           ok = false;
           break;
         }
-        const FaceShares shares = faceShares(s, c.map.sourceImage);
+        // Each face's share of the metrics (distortion.h), summed per region.
+        const std::vector<double>&shareAng = c.metrics.faceAngleShare, &shareL2 = c.metrics.faceL2Share;
         double ang = 0, l2sq = 0;
         for (int f = 0; f < s.faceCount(); ++f) {
-          ang += shares.ang[f], l2sq += shares.l2sq[f];
+          ang += shareAng[f], l2sq += shareL2[f];
           if (region[f] < 0) continue;  // no anchor on its component
-          sums[4 * st + mi][region[f]] += shares.ang[f];
-          sums[4 * st + 2 + mi][region[f]] += shares.l2sq[f];
+          sums[4 * st + mi][region[f]] += shareAng[f];
+          sums[4 * st + 2 + mi][region[f]] += shareL2[f];
         }
         std::printf("%-22s %-10s %-8s E_ang %.4f (faces: %.4f) E_L2 %.4f (faces: %.4f)\n", p.name.c_str(),
                     m.name.c_str(), st ? "composed" : "final", c.metrics.eAng, ang, c.metrics.eL2, std::sqrt(l2sq));

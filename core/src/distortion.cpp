@@ -32,6 +32,8 @@ DistortionMetrics computeDistortion(const IndexedMesh& S, const std::vector<Vec3
   DistortionMetrics d;
   const int nf = S.faceCount();
   d.faceStretch.assign(nf, 1.0);
+  d.faceAngleShare.assign(nf, 0.0);
+  d.faceL2Share.assign(nf, 0.0);
   const TargetNormals targetNormals(T);
   double diag2 = 0;
   {
@@ -60,7 +62,9 @@ DistortionMetrics computeDistortion(const IndexedMesh& S, const std::vector<Vec3
     sumAs += As, sumAt += At;
     l2t += At * 0.5 * (a * a + b * b);
     l2s += As * 0.5 * (1.0 / (a * a) + 1.0 / (b * b));
-    ang += As * (0.5 * (a / b + b / a) - 1.0);
+    d.faceAngleShare[f] = As * (0.5 * (a / b + b / a) - 1.0);
+    d.faceL2Share[f] = At * 0.5 * (a * a + b * b);
+    ang += d.faceAngleShare[f];
     const double corner[3] = {angleAt(s0, s1, s2) - angleAt(i0, i1, i2), angleAt(s1, s2, s0) - angleAt(i1, i2, i0),
                               angleAt(s2, s0, s1) - angleAt(i2, i0, i1)};
     angDeg += As * (std::abs(corner[0]) + std::abs(corner[1]) + std::abs(corner[2])) / 3.0 * 180.0 / M_PI;
@@ -76,8 +80,11 @@ DistortionMetrics computeDistortion(const IndexedMesh& S, const std::vector<Vec3
   d.eAngDegrees = angDeg / sumAs;
   // Per-face stretch relative to the global scale, so that 1 means "as stretched as average".
   const double scale = std::sqrt(sumAs / sumAt);
-  for (int f = 0; f < nf; ++f)
+  for (int f = 0; f < nf; ++f) {
     if (stretch[f] > 0) d.faceStretch[f] = stretch[f] * scale;
+    d.faceAngleShare[f] /= sumAs;
+    d.faceL2Share[f] *= sumAs / (sumAt * sumAt);
+  }
   return d;
 }
 

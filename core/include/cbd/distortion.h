@@ -26,6 +26,10 @@ struct DistortionMetrics {
   int flipped = 0;           ///< image normal opposite to the target surface normal there
   int degenerate = 0;        ///< image area below 1e-12 of the squared bbox diagonal
   std::vector<double> faceStretch;  ///< per source face: sqrt((s1^2+s2^2)/2) scaled so 1 is no stretch
+  /// Per source face, its share of the means above: A_s ((s1/s2 + s2/s1)/2 - 1) / sum A_s, which
+  /// sum to `eAng`, and A_t (s1^2+s2^2)/2 sum A_s / (sum A_t)^2, which sum to eL2^2 (0 for a
+  /// degenerate image): where on the source a map's distortion sits.
+  std::vector<double> faceAngleShare, faceL2Share;
 };
 
 /// Measure M_st. `image[v]` is the image of source vertex v; `onTarget[v]` its face on the
