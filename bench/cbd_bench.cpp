@@ -358,10 +358,11 @@ std::vector<int> nearestAnchorRegions(const IndexedMesh& s, const std::vector<in
 }
 
 /// Where on the source the maps of greedy and Voronoi C differ: per pair of the manifest, both
-/// methods with cbd's defaults and once more as composed (untangling off: what the base domains
-/// and patch maps give), in this process as the per-face terms are needed; each face's share of
-/// E_ang and of E_L2^2 summed over the region of its nearest anchor -> OUTDIR/regions.csv. The
-/// shares are checked to add up to each run's metrics, which are the table's (same options).
+/// methods with cbd's defaults, the final map and the composed one (before untangling: what the
+/// base domains and patch maps give), in this process as the per-face terms are needed; each
+/// face's share of E_ang and of E_L2^2 summed over the region of its nearest anchor ->
+/// OUTDIR/regions.csv. The shares are checked to add up to each run's metrics, which are the
+/// table's (same options).
 int regions(const fs::path& root, const std::string& manifest, const fs::path& out) {
   std::vector<Pair> pairs;
   if (!readManifest(root, manifest, pairs)) return 1;
@@ -393,36 +394,34 @@ int regions(const fs::path& root, const std::string& manifest, const fs::path& o
     for (const Method& m : methods()) {
       const int mi = m.name == "greedy" ? 0 : m.name == "voronoi-C" ? 1 : -1;
       if (mi < 0) continue;
-      for (int st = 0; st < 2 && ok; ++st) {
-        CrossParameterizationOptions o = m.options;
-        o.untangle = st == 0;
-        const CrossParameterizationResult c = crossParameterize(s, lp.sourceAnchors, lp.input.target, lp.targetAnchors,
-                                                                lp.input.report.source.eulerCharacteristic, o);
-        if (!c.status.ok()) {
-          std::printf("%-22s %-10s FAILED %s\n", p.name.c_str(), m.name.c_str(), c.status.message.c_str());
-          ok = false;
-          break;
-        }
+      const CrossParameterizationResult c = crossParameterize(s, lp.sourceAnchors, lp.input.target, lp.targetAnchors,
+                                                              lp.input.report.source.eulerCharacteristic, m.options);
+      if (!c.status.ok()) {
+        std::printf("%-22s %-10s FAILED %s\n", p.name.c_str(), m.name.c_str(), c.status.message.c_str());
+        ok = false;
+        break;
+      }
+      // The final map, then the composed one (before untangling), from the same run.
+      for (int st = 0; st < 2; ++st) {
+        const DistortionMetrics& dm = st == 0 ? c.metrics : c.composedMetrics;
         // Each face's share of the metrics (distortion.h), summed per region.
-        const std::vector<double>&shareAng = c.metrics.faceAngleShare, &shareL2 = c.metrics.faceL2Share;
         double ang = 0, l2sq = 0;
         for (int f = 0; f < s.faceCount(); ++f) {
-          ang += shareAng[f], l2sq += shareL2[f];
+          ang += dm.faceAngleShare[f], l2sq += dm.faceL2Share[f];
           if (region[f] < 0) continue;  // no anchor on its component
-          sums[4 * st + mi][region[f]] += shareAng[f];
-          sums[4 * st + 2 + mi][region[f]] += shareL2[f];
+          sums[4 * st + mi][region[f]] += dm.faceAngleShare[f];
+          sums[4 * st + 2 + mi][region[f]] += dm.faceL2Share[f];
         }
         std::printf("%-22s %-10s %-8s E_ang %.4f (faces: %.4f) E_L2 %.4f (faces: %.4f)\n", p.name.c_str(),
-                    m.name.c_str(), st ? "composed" : "final", c.metrics.eAng, ang, c.metrics.eL2, std::sqrt(l2sq));
+                    m.name.c_str(), st ? "composed" : "final", dm.eAng, ang, dm.eL2, std::sqrt(l2sq));
         std::fflush(stdout);
         // The shares must add up to the metrics the table reports, else the regions mean nothing.
-        if (std::abs(ang - c.metrics.eAng) > 1e-6 * std::max(1.0, c.metrics.eAng) ||
-            std::abs(std::sqrt(l2sq) - c.metrics.eL2) > 1e-6 * c.metrics.eL2) {
+        if (std::abs(ang - dm.eAng) > 1e-6 * std::max(1.0, dm.eAng) ||
+            std::abs(std::sqrt(l2sq) - dm.eL2) > 1e-6 * dm.eL2) {
           std::printf("%-22s the per-face shares do not add up to the metrics\n", p.name.c_str());
           return 1;
         }
       }
-      if (!ok) break;
     }
     if (!ok) continue;
     for (int f = 0; f < s.faceCount(); ++f) {
@@ -630,7 +629,7 @@ int main(int argc, char** argv) {
                  "-> OUTDIR/stress.csv, OUTDIR/stress.md.\n"
                  "sensitivity: greedy and Voronoi C on every pair of the manifest with each of R1, R2, ...\n"
                  "rounds of path straightening -> OUTDIR/sensitivity.csv.\n"
-                 "regions: greedy and Voronoi C (defaults, and as composed: no untangling) on every pair of the\n"
+                 "regions: greedy and Voronoi C (defaults; final and composed map) on every pair of the\n"
                  "manifest, each source face's share of E_ang and of E_L2^2 summed per region of its nearest\n"
                  "anchor -> OUTDIR/regions.csv.\n");
     return 2;

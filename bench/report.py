@@ -386,8 +386,8 @@ E_ang and E_L2² are sums over the source's faces (E_ang: source area × angle d
 the total area; E_L2²: image area × (σ1² + σ2²)/2, normalised). `cbd_bench regions` runs greedy
 and Voronoi C once more with cbd's defaults, in one process so that every face's share is at
 hand, and sums the shares per region of the source: the faces geodesically nearest to each
-anchor (the same regions for both methods); in brackets, the same as composed (the runs once
-more with the untangling off: the base domains and patch maps alone). The regions' sums are the
+anchor (the same regions for both methods); in brackets, the same for the composed map of those
+runs (before untangling: the base domains and patch maps alone). The regions' sums are the
 table's metrics (checked here), so a difference between the methods splits into where it comes
 from, and whether it was there before the untangling:
 
