@@ -385,10 +385,12 @@ int runMap(const RunArgs& a) {
   po.faceColor = po.faceQuality = true;
   po.vertexColor = toSource.vertexColor;
   po.vertexQuality = toSource.vertexQuality;
+  po.vertexTexCoord = toSource.vertexTexCoord;
   const std::string dir = a.out;
   if (cbd::Status s = cbd::savePly(dir + "/mst.ply", mst, po); !s) return finish(s, j, a.jsonPath);
   po.vertexColor = toTarget.vertexColor;
   po.vertexQuality = toTarget.vertexQuality;
+  po.vertexTexCoord = toTarget.vertexTexCoord;
   if (cbd::Status s = cbd::savePly(dir + "/mts.ply", mts, po); !s) return finish(s, j, a.jsonPath);
   if (cbd::Status s = cbd::writeCorrespondence(dir + "/correspondence.txt", r.map.sourceToTarget, r.map.sourceImage); !s)
     return finish(s, j, a.jsonPath);

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <fstream>
 
+#include "cbd/map_io.h"
 #include "cbd/mesh.h"
 #include "support/fixtures.h"
 
@@ -61,6 +62,54 @@ TEST(MeshIO, OffRoundTripThroughPly) {
   EXPECT_EQ(m2.vert[42].C(), m.vert[42].C());
   // Positions survive a PLY round trip in double precision.
   EXPECT_EQ(toIndexed(m2).positions[5], toIndexed(m).positions[5]);
+}
+
+// M_st carries the target's per-vertex texture coordinates (interpolated at each image), and
+// mst.ply must keep them: written as texture_u/texture_v, read back as the same numbers.
+TEST(MeshIO, TransferredTextureCoordinatesAreWrittenAndReadBack) {
+  TempDir d;
+  const IndexedMesh sphere = fx::icosphere(2);
+  Mesh onto;
+  fromIndexed(sphere, onto);
+  for (auto& v : onto.vert) v.T() = vcg::TexCoord2d(0.5 + 0.5 * v.P()[0], 0.25 + 0.5 * v.P()[1]);
+  // Every vertex of the mapped mesh at the centroid of a face of `onto` (vertex v on face v), so
+  // each must get the mean of that face's corners' coordinates.
+  const int n = sphere.vertexCount();
+  ASSERT_LE(n, sphere.faceCount());
+  std::vector<FacePoint> points(n);
+  std::vector<Vec3> image(n);
+  for (int v = 0; v < n; ++v) {
+    points[v].face = v;
+    points[v].bary = Vec3::Constant(1.0 / 3.0);
+    const auto& t = sphere.faces[v];
+    image[v] = (sphere.positions[t[0]] + sphere.positions[t[1]] + sphere.positions[t[2]]) / 3.0;
+  }
+  Mesh out;
+  buildMappedMesh(onto, image, points, onto, TransferOptions{false, false, true},
+                  std::vector<double>(sphere.faceCount(), 1.0), out);
+  SavePlyOptions opt;
+  opt.vertexTexCoord = true;
+  ASSERT_TRUE(savePly(d.file("mst.ply"), out, opt).ok());
+  Mesh back;
+  const LoadResult r = loadMesh(d.file("mst.ply"), back);
+  ASSERT_TRUE(r.status.ok()) << r.status.message;
+  EXPECT_TRUE(r.hasVertexTexCoord);
+  ASSERT_EQ(back.VN(), n);
+  double spread = 0;
+  for (int v = 0; v < n; ++v) {
+    const auto& t = sphere.faces[v];
+    double u = 0, w = 0;
+    for (int k = 0; k < 3; ++k) u += onto.vert[t[k]].T().U() / 3.0, w += onto.vert[t[k]].T().V() / 3.0;
+    EXPECT_NEAR(back.vert[v].T().U(), u, 1e-6) << v;  // PLY stores them as float
+    EXPECT_NEAR(back.vert[v].T().V(), w, 1e-6) << v;
+    EXPECT_LT((toIndexed(back).positions[v] - image[v]).norm(), 1e-6);
+    spread = std::max(spread, std::abs(back.vert[v].T().U() - back.vert[0].T().U()));
+  }
+  EXPECT_GT(spread, 0.1);  // the coordinates vary over the sphere: not one value everywhere
+  // Without the option the file has none.
+  ASSERT_TRUE(savePly(d.file("plain.ply"), out, SavePlyOptions{}).ok());
+  Mesh plain;
+  EXPECT_FALSE(loadMesh(d.file("plain.ply"), plain).hasVertexTexCoord);
 }
 
 TEST(MeshIO, ColouredOff) {

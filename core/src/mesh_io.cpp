@@ -6,11 +6,13 @@
 #include <cstdint>
 #include <cstring>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <system_error>
 
+#include <vcg/complex/append.h>
 #include <wrap/io_trimesh/export_ply.h>
 #include <wrap/io_trimesh/import_ply.h>
 #include <wrap/io_trimesh/import_stl.h>
@@ -488,9 +490,27 @@ Status savePly(const std::string& path, const Mesh& mesh, const SavePlyOptions& 
                                                      dir.string() + "' does not exist");
   }
   const fs::path tmp = dir / ("." + target.filename().string() + ".tmp");
-  // vcglib's exporter takes a non-const mesh although it does not modify it.
-  int err = io::ExporterPLY<Mesh>::Save(const_cast<Mesh&>(mesh), tmp.string().c_str(), mask,
-                                        options.binary);
+  int err = 0;
+  if (options.vertexTexCoord) {
+    // vcglib 2020.09 declares per-vertex texture_u/texture_v as float but writes the mesh's
+    // scalar (double) in binary files, which no reader can parse: they go out as float
+    // attributes of a copy instead, under the names its importer (and MeshLab) reads.
+    Mesh copy;
+    vcg::tri::Append<Mesh, Mesh>::MeshCopy(copy, const_cast<Mesh&>(mesh));
+    auto u = vcg::tri::Allocator<Mesh>::GetPerVertexAttribute<float>(copy, std::string("texture_u"));
+    auto v = vcg::tri::Allocator<Mesh>::GetPerVertexAttribute<float>(copy, std::string("texture_v"));
+    for (auto& vert : copy.vert) u[vert] = static_cast<float>(vert.T().U()), v[vert] = static_cast<float>(vert.T().V());
+    io::PlyInfo pi;
+    pi.mask = mask;
+    pi.AddPerVertexFloatAttribute("texture_u");
+    pi.AddPerVertexFloatAttribute("texture_v");
+    err = io::ExporterPLY<Mesh>::Save(copy, tmp.string().c_str(), options.binary, pi);
+    // PlyInfo strdup()s the property names and never frees them.
+    for (auto& d : pi.VertDescriptorVec) std::free(const_cast<char*>(d.propname));
+  } else {
+    // vcglib's exporter takes a non-const mesh although it does not modify it.
+    err = io::ExporterPLY<Mesh>::Save(const_cast<Mesh&>(mesh), tmp.string().c_str(), mask, options.binary);
+  }
   if (err != 0) {
     fs::remove(tmp, ec);
     return Status::error(ErrorCode::OutputError,

@@ -241,6 +241,52 @@ PY
     cmp -s "map_voronoi/$f" "map_again/$f" || same=0
   done
   [ "$same" = 1 ] && ok "cbd map twice: byte-identical outputs" || bad "cbd map twice: outputs differ"
+  # Per-vertex texture coordinates of the target carried onto mst.ply (and the source's onto
+  # mts.ply): the pair as PLY with u, v a linear function of x, y; each image lies on the other
+  # surface, so its interpolated u, v must be that function of its own position.
+  python3 - "$MESHES" <<'PY'
+import sys
+def ply(name):
+    lines = [l for l in open('%s/%s.off' % (sys.argv[1], name)) if l.strip() and not l.startswith('#')]
+    nv, nf = map(int, lines[1].split()[:2])
+    v = [list(map(float, l.split()[:3])) for l in lines[2:2 + nv]]
+    lo = [min(p[k] for p in v) for k in range(2)]; hi = [max(p[k] for p in v) for k in range(2)]
+    with open('%s_uv.ply' % name, 'w') as o:
+        o.write('ply\nformat ascii 1.0\nelement vertex %d\nproperty double x\nproperty double y\nproperty double z\n'
+                'property float texture_u\nproperty float texture_v\nelement face %d\n'
+                'property list uchar int vertex_indices\nend_header\n' % (nv, nf))
+        for p in v:
+            o.write('%.17g %.17g %.17g %.8f %.8f\n' % (p[0], p[1], p[2], (p[0] - lo[0]) / (hi[0] - lo[0]), (p[1] - lo[1]) / (hi[1] - lo[1])))
+        for l in lines[2 + nv:2 + nv + nf]: o.write('3 ' + ' '.join(l.split()[1:4]) + '\n')
+ply('bull'); ply('cow')
+PY
+  "$CBD" map --source bull_uv.ply --source-anchors "$EXAMPLES/bull_picked_points.pp" \
+    --target cow_uv.ply --target-anchors "$EXAMPLES/cow_picked_points.pp" --out map_uv >/dev/null 2>map_uv.err; rc=$?
+  res=$(python3 - "$MESHES" <<'PY' 2>&1
+import struct, sys
+def worst(mesh, other):
+    d = open(mesh, 'rb').read()
+    head = d[:d.index(b'end_header\n')].decode().split('\n')
+    props = [l.split()[-1] for l in head if l.startswith('property') and 'list' not in l][:5]
+    if props != ['x', 'y', 'z', 'texture_u', 'texture_v']: return 'properties %s' % props
+    nv = int([l for l in head if l.startswith('element vertex')][0].split()[-1])
+    lines = [l for l in open('%s/%s.off' % (sys.argv[1], other)) if l.strip() and not l.startswith('#')]
+    v = [list(map(float, l.split()[:3])) for l in lines[2:2 + int(lines[1].split()[0])]]
+    lo = [min(p[k] for p in v) for k in range(2)]; hi = [max(p[k] for p in v) for k in range(2)]
+    off, err = d.index(b'end_header\n') + len(b'end_header\n'), 0.0
+    for _ in range(nv):
+        x, y, z, u, w = struct.unpack_from('<dddff', d, off); off += 32
+        err = max(err, abs(u - (x - lo[0]) / (hi[0] - lo[0])), abs(w - (y - lo[1]) / (hi[1] - lo[1])))
+    return err
+a, b = worst('map_uv/mst.ply', 'cow'), worst('map_uv/mts.ply', 'bull')
+print('ok' if isinstance(a, float) and isinstance(b, float) and max(a, b) < 1e-5 else 'bad', 'worst u,v error', a, b)
+PY
+)
+  if [ "$rc" = 0 ] && [ "${res%% *}" = ok ]; then
+    ok "cbd map carries texture coordinates onto mst.ply and mts.ply: $res"
+  else
+    bad "cbd map texture coordinates: exit $rc, $res $(cat map_uv.err)"
+  fi
   "$CBD" map --source "$MESHES/bull.off" --source-anchors "$EXAMPLES/bull_picked_points.pp" \
     --target "$MESHES/cow.off" --target-anchors "$EXAMPLES/cow_picked_points.pp" --out /proc/nope >/dev/null 2>&1; rc=$?
   [ "$rc" = "$(code_of output_error)" ] && ok "cbd map into an unwritable folder: exit $rc" || bad "unwritable map folder: exit $rc"

@@ -70,6 +70,7 @@ struct SavePlyOptions {
   bool binary = true;         ///< binary little-endian PLY (false: ASCII)
   bool vertexColor = false;   ///< write per-vertex red/green/blue/alpha
   bool vertexQuality = false; ///< write per-vertex quality
+  bool vertexTexCoord = false; ///< write per-vertex texture coordinates (texture_u/texture_v)
   bool faceColor = false;     ///< write per-face red/green/blue/alpha
   bool faceQuality = false;   ///< write per-face quality
   bool edges = false;         ///< write the edge list (for polyline meshes)
