@@ -340,10 +340,11 @@ void FilterCbdPlugin::initParameterSet(QAction* action, MeshDocument& md, RichPa
                         "How the base-domain edges are traced: from cues of the geodesic Voronoi "
                         "diagram of the anchors, or greedily as shortest paths."));
   par.addParam(RichInt(kMinEdgeNodes, 3, "Minimum edge nodes",
-                       "The smallest number of nodes on a base-domain edge."));
+                       "b (1..16): the nodes the paths may pass on every edge of the mesh, besides its "
+                       "vertices; 1 with adaptive nodes off is the paper's E1."));
   par.addParam(RichBool(kAdaptiveEdgeNodes, true, "Adaptive edge nodes",
-                        "Add edge nodes where the edge is long or curved (else every edge gets the "
-                        "minimum)."));
+                        "More nodes on mesh edges longer than their neighbours' mean: max(b, b l / l_mean) "
+                        "(else every edge gets b)."));
   if (id == FP_VORONOI_BASE_DOMAIN)
     par.addParam(RichBool(kColourByCluster, false, "Colour by Voronoi cluster",
                           "Colour the two layers per face by the Voronoi cluster of the anchors "
@@ -416,8 +417,9 @@ bool FilterCbdPlugin::apply(int filter, MeshDocument& md, const RichParameterLis
                                                std::to_string(method));
   options.method = static_cast<cbdplugin::LayoutMethod>(method);
   options.minEdgeNodes = intParam(par, kMinEdgeNodes);
-  if (options.minEdgeNodes < 0)
-    throwError(cbd::ErrorCode::InvalidArgument, "'Minimum edge nodes' must be >= 0, got " + std::to_string(options.minEdgeNodes));
+  if (options.minEdgeNodes < 1 || options.minEdgeNodes > 16)
+    throwError(cbd::ErrorCode::InvalidArgument,
+               "'Minimum edge nodes' must be in 1..16 (as cbd's --min-edge-nodes), got " + std::to_string(options.minEdgeNodes));
   options.adaptiveEdgeNodes = boolParam(par, kAdaptiveEdgeNodes);
   if (filter == FP_CROSS_PARAMETERIZE) {
     options.straightenRounds = intParam(par, kStraightenRounds);
