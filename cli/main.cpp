@@ -441,6 +441,11 @@ int runSample(const SampleArgs& a) {
   cbd::LoadResult lr = cbd::loadMesh(a.mesh, mesh);
   if (!lr.status) return finish(lr.status, j, "");
   const cbd::IndexedMesh im = cbd::toIndexed(mesh);
+  if (a.seed < 0 || a.seed >= im.vertexCount())
+    return finish(cbd::Status::error(cbd::ErrorCode::InvalidArgument,
+                                     "--seed " + std::to_string(a.seed) + " is not a vertex of '" + a.mesh + "' (0.." +
+                                         std::to_string(im.vertexCount() - 1) + ")"),
+                  j, "");
   const std::vector<int> vs = cbd::farthestPointSampling(im, a.count, a.seed);
   std::vector<cbd::Anchor> anchors;
   for (size_t k = 0; k < vs.size(); ++k) {
@@ -503,8 +508,8 @@ int main(int argc, char** argv) {
       "layout",
       "Build the base domain on the source (Sec. 5.1): Voronoi clusters of the anchors, a path across every cut, "
       "triangulation of the rest; with --target, the same layout on the target too (Sec. 5.2), in OUT/source and "
-      "OUT/target, corresponding patches in the same colour. Writes layout.ply (faces coloured by patch), paths.ply "
-      "and clusters.ply per surface.");
+      "OUT/target, corresponding patches in the same colour. Writes layout.ply (faces coloured by patch) and paths.ply "
+      "per surface, and with the Voronoi method clusters.ply (faces coloured by Voronoi cluster).");
   addRunOptions(cmdLayout, layout, false);
 
   RunArgs map;

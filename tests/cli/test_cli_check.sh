@@ -290,6 +290,16 @@ PY
   "$CBD" map --source "$MESHES/bull.off" --source-anchors "$EXAMPLES/bull_picked_points.pp" \
     --target "$MESHES/cow.off" --target-anchors "$EXAMPLES/cow_picked_points.pp" --out /proc/nope >/dev/null 2>&1; rc=$?
   [ "$rc" = "$(code_of output_error)" ] && ok "cbd map into an unwritable folder: exit $rc" || bad "unwritable map folder: exit $rc"
+  # sample-anchors: N points on the mesh; a --seed that is no vertex is refused, nothing written.
+  "$CBD" sample-anchors -m "$MESHES/cow.off" -n 5 --seed 7 -o sampled.pp >/dev/null 2>&1; rc=$?
+  n=$(grep -c '<point ' sampled.pp 2>/dev/null)
+  [ "$rc" = 0 ] && [ "$n" = 5 ] && ok "cbd sample-anchors: 5 points" || bad "cbd sample-anchors: exit $rc, $n points"
+  "$CBD" sample-anchors -m "$MESHES/cow.off" -n 5 --seed 2904 -o badseed.pp >/dev/null 2>badseed.err; rc=$?
+  if [ "$rc" = "$(code_of invalid_argument)" ] && [ ! -e badseed.pp ] && grep -q "0..2903" badseed.err; then
+    ok "cbd sample-anchors --seed out of range: exit $rc, $(cat badseed.err)"
+  else
+    bad "cbd sample-anchors --seed out of range: exit $rc, $(cat badseed.err)"
+  fi
   # No run above changed an input file.
   [ "$sum_before" = "$(md5sum "$MESHES/cow.off" "$MESHES/bull.off" "$EXAMPLES"/*.pp)" ] && ok "real inputs untouched" || bad "real inputs modified"
 else
