@@ -16,8 +16,8 @@
 # (meshlabserver needs an X display: xvfb-run -a PREFIX/bin/meshlabserver ...).
 #
 # Usage: scripts/meshlab_prefix.sh PREFIX [PLUGIN_SO]
-#   PLUGIN_SO  the built plugin; default: the first of build-plugin/plugin/libfilter_cbd.so,
-#              build/plugin/libfilter_cbd.so under the repository. Without one found, the
+#   PLUGIN_SO  the built plugin; default: the newer of build/plugin/libfilter_cbd.so and
+#              build-plugin/plugin/libfilter_cbd.so under the repository. Without one found, the
 #              prefix is made without our plugin (a warning says so).
 # Environment: MESHLAB_BIN_DIR (default /usr/bin), MESHLAB_LIB_DIR
 #              (default /usr/lib/x86_64-linux-gnu/meshlab) to take MeshLab from elsewhere.
@@ -42,8 +42,9 @@ done
 [ -d "$ML_LIB/plugins" ] || die "$ML_LIB/plugins not found (install Debian's meshlab package)"
 
 if [ -z "$PLUGIN_SO" ]; then
-  for cand in "$ROOT/build-plugin/plugin/$PLUGIN_NAME" "$ROOT/build/plugin/$PLUGIN_NAME"; do
-    if [ -f "$cand" ]; then PLUGIN_SO="$cand"; break; fi
+  # The newer of the two build trees' plugins (as meshlab_scripts/cross_parameterize.sh picks).
+  for cand in "$ROOT/build/plugin/$PLUGIN_NAME" "$ROOT/build-plugin/plugin/$PLUGIN_NAME"; do
+    if [ -f "$cand" ] && { [ -z "$PLUGIN_SO" ] || [ "$cand" -nt "$PLUGIN_SO" ]; }; then PLUGIN_SO="$cand"; fi
   done
   [ -n "$PLUGIN_SO" ] || log "warning: no built $PLUGIN_NAME found; making the prefix without the cbd plugin"
 else

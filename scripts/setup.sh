@@ -27,7 +27,7 @@ PACKAGES=(
   libgtest-dev googletest libeigen3-dev
   libpugixml-dev nlohmann-json3-dev libcli11-dev
   qtbase5-dev libqt5opengl5-dev libqt5xmlpatterns5-dev libglew-dev libglu1-mesa-dev
-  meshlab xvfb xauth x11-apps imagemagick
+  meshlab xvfb xauth x11-apps x11-utils imagemagick
   libcgal-demo gnuplot-nox
   clang libclang-rt-14-dev
 )

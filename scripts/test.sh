@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Set everything up (Debian packages, MeshLab SDK), build, and pass the test suite:
-#   1. the release build: every unit, CLI and plugin test (ctest, label "slow" excluded);
+#   1. the release build: every unit, CLI and plugin test (ctest);
 #   2. the same suite built with AddressSanitizer + UndefinedBehaviorSanitizer (no plugin:
 #      MeshLab itself is not built with them);
 #   3. a short libFuzzer run of the anchor parsers and the mesh loaders: inputs that once
@@ -15,12 +15,12 @@ FUZZ_RUNS="${FUZZ_RUNS:-600000}"
 
 echo "== release build and tests"
 "$ROOT/scripts/build.sh" "$ROOT/build"
-(cd "$ROOT/build" && ctest --output-on-failure --timeout 900 -LE slow -j "$(nproc)")
+(cd "$ROOT/build" && ctest --output-on-failure --timeout 900 -j "$(nproc)")
 
 echo "== AddressSanitizer + UndefinedBehaviorSanitizer build and tests"
 "$ROOT/scripts/build.sh" "$ROOT/build-asan" -DCBD_SANITIZE=ON -DCBD_BUILD_PLUGIN=OFF -DCMAKE_BUILD_TYPE=RelWithDebInfo
 (cd "$ROOT/build-asan" && ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
-   ctest --output-on-failure --timeout 900 -LE slow -j "$(nproc)")
+   ctest --output-on-failure --timeout 900 -j "$(nproc)")
 
 if [ "$FUZZ_RUNS" -gt 0 ]; then
   echo "== libFuzzer: ${FUZZ_RUNS} runs per target"
