@@ -470,6 +470,9 @@ IndexedMesh subdivide(const IndexedMesh& m) {
 
 /// Layout time against anchors (on one mesh) and against mesh size (subdivision), both
 /// methods, the mesh paired with a turned copy of itself; plus one full Dijkstra sweep as the lower bound.
+/// Anchors of the size sweep of `scaling` (farthest-point samples of each subdivision level).
+constexpr int kSizeSweepAnchors = 32;
+
 int scaling(const std::string& meshPath, const fs::path& out, int maxLevel, const std::vector<int>& counts) {
   Mesh vm;
   if (!loadMesh(meshPath, vm).status) {
@@ -526,7 +529,7 @@ int scaling(const std::string& meshPath, const fs::path& out, int maxLevel, cons
   for (int n : counts) record("anchors", base, n);
   IndexedMesh m = base;
   for (int level = 0; level <= maxLevel; ++level) {
-    record("size", m, 32);
+    record("size", m, kSizeSweepAnchors);
     if (level < maxLevel) m = subdivide(m);
   }
   std::printf("wrote %s\n", (out / "scaling.csv").c_str());
@@ -610,19 +613,44 @@ std::vector<int> intList(const char* s) {
 
 }  // namespace
 
+/// The settings the report names, as this build has them: cbd's defaults (the option structs'
+/// initialisers, which the table's default runs use) and the bench's own constants ->
+/// OUTDIR/defaults.csv, so bench/report.py writes none of them by hand.
+int defaults(const fs::path& out) {
+  fs::create_directories(out);
+  const CrossParameterizationOptions o;
+  std::ofstream csv(out / "defaults.csv");
+  csv << "setting,value\n"
+      << "straighten_rounds," << o.straightening.rounds << '\n'
+      << "min_edge_nodes," << o.edgeNodes.minEdgeNodes << '\n'
+      << "adaptive_edge_nodes," << (o.edgeNodes.adaptive ? 1 : 0) << '\n'
+      << "polish_stretch_weight," << o.untangling.polishStretchWeight << '\n'
+      << "size_sweep_anchors," << kSizeSweepAnchors << '\n';
+  if (!csv) {
+    std::fprintf(stderr, "cbd_bench: cannot write %s\n", (out / "defaults.csv").c_str());
+    return 1;
+  }
+  std::printf("wrote %s\n", (out / "defaults.csv").c_str());
+  return 0;
+}
+
 int main(int argc, char** argv) {
   const fs::path root = fs::path(argc > 0 ? argv[0] : ".").parent_path();
-  auto usage = [] {
-    std::fprintf(stderr,
+  // --help: the usage on stdout, exit 0; a wrong command line: on stderr, exit 2.
+  const bool help = argc == 2 && (std::strcmp(argv[1], "-h") == 0 || std::strcmp(argv[1], "--help") == 0);
+  auto usage = [help] {
+    std::fprintf(help ? stdout : stderr,
                  "usage: cbd_bench table ROOT MANIFEST OUTDIR [ORDERS]\n"
                  "       cbd_bench scaling MESH OUTDIR MAX_SUBDIVISION_LEVEL N1,N2,...\n"
                  "       cbd_bench stress OUTDIR SETS_PER_COUNT N1,N2,...\n"
                  "       cbd_bench sensitivity ROOT MANIFEST OUTDIR R1,R2,...\n"
                  "       cbd_bench regions ROOT MANIFEST OUTDIR\n"
+                 "       cbd_bench defaults OUTDIR\n"
                  "table: for every pair of the manifest, the greedy baseline and the Voronoi method (E1: one\n"
                  "edge node per edge; C: adaptive) -> OUTDIR/table.csv, OUTDIR/table.md; greedy and C also\n"
                  "with ORDERS - 1 (default 2) more seeded polish vertex orders -> OUTDIR/table_orders.csv.\n"
-                 "scaling: layout time against anchor count and against mesh size (1-to-4 subdivisions),\n"
+                 "scaling: layout time against anchor count (N1,N2,... farthest-point anchors on MESH) and\n"
+                 "against mesh size (MESH and its 1-to-4 subdivisions up to MAX_SUBDIVISION_LEVEL, 32 anchors),\n"
                  "with one full Dijkstra sweep of the edge-node graph as the lower bound -> OUTDIR/scaling.csv;\n"
                  "with a subdivision level > 0, also the whole pipeline at the largest size -> OUTDIR/full.csv.\n"
                  "stress: random and farthest-point anchor sets on synthetic genus 0/1/2 pairs, both methods\n"
@@ -631,8 +659,10 @@ int main(int argc, char** argv) {
                  "rounds of path straightening -> OUTDIR/sensitivity.csv.\n"
                  "regions: greedy and Voronoi C (defaults; final and composed map) on every pair of the\n"
                  "manifest, each source face's share of E_ang and of E_L2^2 summed per region of its nearest\n"
-                 "anchor -> OUTDIR/regions.csv.\n");
-    return 2;
+                 "anchor -> OUTDIR/regions.csv.\n"
+                 "defaults: cbd's default settings and the bench's constants that the report names\n"
+                 "-> OUTDIR/defaults.csv.\n");
+    return help ? 0 : 2;
   };
   (void)root;
   if (argc >= 5 && std::strcmp(argv[1], "table") == 0) return table(argv[2], argv[3], argv[4], argc >= 6 ? std::max(1, std::atoi(argv[5])) : 3);
@@ -646,5 +676,6 @@ int main(int argc, char** argv) {
     return sensitivity(argv[2], argv[3], argv[4], intList(argv[5]));
   }
   if (argc >= 5 && std::strcmp(argv[1], "regions") == 0) return regions(argv[2], argv[3], argv[4]);
+  if (argc >= 3 && std::strcmp(argv[1], "defaults") == 0) return defaults(argv[2]);
   return usage();
 }

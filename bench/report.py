@@ -25,6 +25,16 @@ full = rows(os.path.join(out, 'scaling_size', 'full.csv'))
 orders = rows(os.path.join(out, 'table_orders.csv'))
 sens = rows(os.path.join(out, 'sensitivity.csv'))
 regs = rows(os.path.join(out, 'regions.csv'))
+# cbd's defaults and the bench's constants as the binary that ran has them (`cbd_bench defaults`).
+defaults = {r['setting']: r['value'] for r in rows(os.path.join(out, 'defaults.csv'))}
+if readme and not defaults:
+    sys.exit(f"report.py: {os.path.join(out, 'defaults.csv')} is missing: run `cbd_bench defaults {out}` "
+             "(bench/run.sh does) so the report names the settings the runs used")
+ROUNDS = int(defaults.get('straighten_rounds', '-1'))
+B_NODES = defaults.get('min_edge_nodes', '?')
+W = float(defaults.get('polish_stretch_weight', 'nan'))
+# The polish's objective, E_ang x E_L2^W, as the table heads and the text write it.
+PRODUCT = 'E_ang × E_L2' + ('²' if W == 2 else f'^{W:g}')
 
 def fit(points):
     """Least-squares exponent k of t = c * x^k over (x, t) with t > 0."""
@@ -101,7 +111,7 @@ def md_table(traced):
 def md_speedup(suffix=''):
     """Voronoi C against greedy: layout speed-up, and which has the lower E_ang, E_L2 and flip
     count, after untangling and as composed (the base domains and patch maps alone)."""
-    lines = ['| pair | anchors | greedy layout s | Voronoi C layout s | speed-up | lower E_ang | lower E_L2 | lower E_ang × E_L2² | fewer or as few flipped | lower E_ang, composed | lower E_L2, composed |',
+    lines = ['| pair | anchors | greedy layout s | Voronoi C layout s | speed-up | lower E_ang | lower E_L2 | lower ' + PRODUCT + ' | fewer or as few flipped | lower E_ang, composed | lower E_L2, composed |',
              '|---|---|---|---|---|---|---|---|---|---|---|']
     pairs = []
     for r in table:
@@ -109,7 +119,7 @@ def md_speedup(suffix=''):
             pairs.append(r['pair'])
     wins = [0] * 6
     n = 0
-    product = lambda r: float(r['e_ang']) * float(r['e_l2']) ** 2
+    product = lambda r: float(r['e_ang']) * float(r['e_l2']) ** W
     for p in pairs:
         g = [x for x in table if x['pair'] == p and x['method'] == 'greedy' + suffix]
         c = [x for x in table if x['pair'] == p and x['method'] == 'voronoi-C' + suffix]
@@ -168,7 +178,7 @@ def md_orders():
            f'{n_orders - 1} seeded permutations).\n\n' + '\n'.join(lines)
 
 def md_sensitivity():
-    """Greedy against Voronoi C over the rounds of path straightening: the default (2) and the
+    """Greedy against Voronoi C over the rounds of path straightening: the default (ROUNDS) and the
     paths as traced (0) from table.csv, the other rounds from sensitivity.csv; per pair, each
     method's range of the final E_ang and E_L2, and at how many settings Voronoi C is the lower,
     in the final map and as composed (before untangling)."""
@@ -176,7 +186,7 @@ def md_sensitivity():
         return '(not in this run: `bench/run.sh` without `--quick` runs it)'
     runs = {}
     for r in table:
-        k = {'greedy': 2, 'voronoi-C': 2, 'greedy-traced': 0, 'voronoi-C-traced': 0}.get(r['method'])
+        k = {'greedy': ROUNDS, 'voronoi-C': ROUNDS, 'greedy-traced': 0, 'voronoi-C-traced': 0}.get(r['method'])
         if k is not None:
             runs.setdefault(r['pair'], {}).setdefault(k, {})[r['method'].replace('-traced', '')] = r
     for r in sens:
@@ -213,7 +223,7 @@ def md_sensitivity():
     lines.append(f"| **pairs where Voronoi C is lower at every setting** | | | {every['e_ang']} of {n_pairs} | | | "
                  f"{every['e_l2']} of {n_pairs} | {every['both']} of {n_pairs} | "
                  f"{every['e_ang_composed']} / {every['e_l2_composed']} of {n_pairs} | |")
-    return f"Rounds of straightening: {', '.join(str(k) for k in settings)} (2 is cbd's default, 0 the paths as traced).\n\n" + '\n'.join(lines)
+    return f"Rounds of straightening: {', '.join(str(k) for k in settings)} ({ROUNDS} is cbd's default, 0 the paths as traced).\n\n" + '\n'.join(lines)
 
 def md_regions():
     """Per pair and metric, greedy's and Voronoi C's final value as the sum of the source regions'
@@ -296,6 +306,19 @@ if not readme:
     write_plots()
     sys.exit(0)
 
+# Facts of this run the text names, from its data rather than by hand.
+shrec = [r for r in table if r['pair'].startswith('shrec')]
+shrec_note = (f"SHREC'07 381 -> 382 with its {shrec[0]['anchors']} landmarks (from "
+              "`../shared/data/shrec07-fourleg`, which this run had)" if shrec else
+              "SHREC'07 381 -> 382 with its landmarks when `../shared/data/shrec07-fourleg` is present "
+              "(absent in this run)")
+one = lambda xs: xs.pop() if len(xs) == 1 else ' / '.join(sorted(xs, key=int))
+anchors_mesh_vertices = one({r['vertices'] for r in scal_a}) if scal_a else '?'
+size_anchors = one({r['anchors'] for r in scal_s}) if scal_s else defaults.get('size_sweep_anchors', '?')
+stress_rows = rows(os.path.join(out, 'stress.csv'))
+crashed = sum('crashed' in r['message'] for r in stress_rows)
+stress_end = ('every other run ended with a typed error (none crashed; each runs in its own process)'
+              if crashed == 0 else f'{crashed} runs crashed (stress.csv: "the run crashed"), the others ended with a typed error')
 stress_md = open(os.path.join(out, 'stress.md')).read() if os.path.exists(os.path.join(out, 'stress.md')) else '(not run)'
 print(f"""# Benchmark
 
@@ -309,16 +332,15 @@ bash bench/run.sh
 
 (`--quick` for fewer scaling points and stress sets, one polish order, and neither the
 straightening sensitivity nor the regions). Inputs: `bench/manifest.txt` (real pairs
-only: the bundled cow/bull in both directions, SHREC'07 381 -> 382 with its 21 landmarks when
-`../shared/data` is present, and pairs of Debian libcgal-demo meshes with the anchors in
+only: the bundled cow/bull in both directions, {shrec_note}, and pairs of Debian libcgal-demo meshes with the anchors in
 `bench/anchors/`). Every method runs on the same input in the same invocation; each run is a
 forked child process, so its peak resident memory (`getrusage`) is its own. Methods: **greedy**
 = Kraevoy & Sheffer 2004 as described by the paper (all-pairs shortest paths, trial and error,
 completion, path flipping), **Voronoi E1** = the paper's method with one edge node per edge,
-**Voronoi C** = with adaptive edge nodes (b = 3). All use the same edge-node graph, tracer and
+**Voronoi C** = with adaptive edge nodes (b = {B_NODES}). All use the same edge-node graph, tracer and
 build flags; the greedy method's cost is its all-pairs searches over the whole surfaces and its
 trial and error. All three have their layouts' paths straightened inside their patches
-(cbd's default, `--straighten 2`, the same for every method: `core/include/cbd/path_smoothing.h`)
+(cbd's default, `--straighten {ROUNDS}`, the same for every method: `core/include/cbd/path_smoothing.h`)
 before the patch maps are computed; **greedy-traced** and **Voronoi-C-traced** are the same runs
 with the paths as traced (`--straighten 0`), the paper's protocol, where only the map is
 post-processed.
@@ -333,10 +355,10 @@ straightening, the patch parameterizations, the composition, the untangling of M
 and the metrics. Flipped counts M_st's triangles facing against the target surface after
 untangling (the same untangling for every method, `core/include/cbd/map_untangle.h`), whose
 last stage polishes the whole map: it moves vertices across patch boundaries towards a local
-minimum of E_ang × E_L2², so the final numbers keep the base domain only as a starting point.
+minimum of {PRODUCT}, so the final numbers keep the base domain only as a starting point.
 "Composed" is the map before untangling: what the base domains and their patch maps give by
 themselves. E_L2 is Sander et al.'s L2 stretch normalised so that 1 is
-optimal (the issue's definition); E_ang is the area-weighted (σ1/σ2 + σ2/σ1)/2 − 1 (0 optimal).
+optimal (Sander et al. 2001); E_ang is the area-weighted (σ1/σ2 + σ2/σ1)/2 − 1 (0 optimal).
 
 ![E_ang](results/plots/e_ang.png) ![E_L2](results/plots/e_l2.png)
 ![layout time](results/plots/t_layout.png)
@@ -345,7 +367,7 @@ optimal (the issue's definition); E_ang is the area-weighted (σ1/σ2 + σ2/σ1)
 
 {md_speedup()}
 
-E_ang × E_L2² is the objective the untangling's polish lowers on every map (the same for both
+{PRODUCT} is the objective the untangling's polish lowers on every map (the same for both
 methods, `map_untangle.h`); where one method is lower in that product but not in both metrics,
 the two maps sit at different trade-offs between angle and stretch rather than one being worse
 in both.
@@ -399,13 +421,13 @@ from, and whether it was there before the untangling:
 
 {md_speedup('-traced')}
 
-## Scaling with the number of anchors (diplodocus, 23982 vertices, onto a turned copy of itself)
+## Scaling with the number of anchors (diplodocus, {anchors_mesh_vertices} vertices, onto a turned copy of itself)
 
 {md_scaling(scal_a, 'anchors')}
 
 ![scaling with anchors](results/plots/scaling_anchors.png)
 
-## Scaling with mesh size (the cow, 1-to-4 subdivided, 32 anchors, onto a turned copy of itself)
+## Scaling with mesh size (the cow, 1-to-4 subdivided, {size_anchors} anchors, onto a turned copy of itself)
 
 {md_scaling(scal_s, 'vertices')}
 
@@ -436,7 +458,7 @@ point location on the other surface, and the untangling's per-vertex stars.
 Each row: anchor sets of that size drawn uniformly at random or by farthest-point sampling from
 a random seed, transferred to the deformed target through the known correspondence; "ok" means
 the run finished with both layouts valid and isomorphic and every image on the target surface;
-every other run ended with a typed error (no crash, no hang).
+{stress_end}.
 
 ## Renders
 

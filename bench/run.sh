@@ -25,6 +25,8 @@ OUT="$ROOT/bench/results"
 mkdir -p "$OUT"
 MESHES="$ROOT/third_party/cgal-data/meshes"
 
+"$B" defaults "$OUT"   # the settings the report names, as this build has them
+
 echo "== table"
 if [ "$QUICK" = 1 ]; then ORDERS=1; else ORDERS=3; fi
 "$B" table "$ROOT" "$ROOT/bench/manifest.txt" "$OUT" "$ORDERS" | tee "$OUT/table.log"
@@ -66,5 +68,7 @@ if [ -x "$R" ]; then
       --lines "$OUT/render_$m/target/paths.ply" "$OUT/render_$m/target/layout.ply" "$OUT/render_$m/mst.ply"
   done
 fi
-python3 "$ROOT/bench/report.py" "$ROOT" "$OUT" --readme > "$ROOT/bench/README.md"
+# Into place only when complete: a report that refuses its data leaves the old page as it was.
+python3 "$ROOT/bench/report.py" "$ROOT" "$OUT" --readme > "$OUT/README.md.tmp"
+mv "$OUT/README.md.tmp" "$ROOT/bench/README.md"
 echo "wrote $ROOT/bench/README.md, $OUT/*.csv, $OUT/plots/*.png"
