@@ -505,8 +505,11 @@ Status savePly(const std::string& path, const Mesh& mesh, const SavePlyOptions& 
     pi.AddPerVertexFloatAttribute("texture_u");
     pi.AddPerVertexFloatAttribute("texture_v");
     err = io::ExporterPLY<Mesh>::Save(copy, tmp.string().c_str(), options.binary, pi);
-    // PlyInfo strdup()s the property names and never frees them.
+    // PlyInfo strdup()s the property names and never frees them; vcglib 2020.09's mesh does not
+    // free its attributes either.
     for (auto& d : pi.VertDescriptorVec) std::free(const_cast<char*>(d.propname));
+    vcg::tri::Allocator<Mesh>::DeletePerVertexAttribute(copy, u);
+    vcg::tri::Allocator<Mesh>::DeletePerVertexAttribute(copy, v);
   } else {
     // vcglib's exporter takes a non-const mesh although it does not modify it.
     err = io::ExporterPLY<Mesh>::Save(const_cast<Mesh&>(mesh), tmp.string().c_str(), mask, options.binary);
