@@ -234,6 +234,23 @@ class GridLocator {
  public:
   GridLocator(const std::vector<int>& faces, const std::vector<std::array<Vec2, 3>>& uv) : uv_(uv) {
     n_ = std::max(1, static_cast<int>(std::sqrt(static_cast<double>(faces.size()))));
+    // A face is listed in every cell its bounding box meets. In a sound parameterization that is
+    // a few cells per face; faces spanning much of the domain (patches whose two surfaces
+    // disagree wildly: anchors that do not correspond) would make it faces x cells, gigabytes.
+    // Then the grid is coarsened until the lists fit the budget: slower queries, bounded memory.
+    const double budget = 64.0 * static_cast<double>(faces.size()) + 65536.0;
+    auto entries = [&] {
+      double total = 0;
+      for (int f : faces) {
+        Vec2 lo = uv[f][0], hi = lo;
+        for (const Vec2& p : uv[f]) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+        const auto [x0, y0] = cell(lo);
+        const auto [x1, y1] = cell(hi);
+        total += static_cast<double>(x1 - x0 + 1) * (y1 - y0 + 1);
+      }
+      return total;
+    };
+    while (n_ > 1 && entries() > budget) n_ = std::max(1, n_ / 2);
     cells_.assign(static_cast<size_t>(n_) * n_, {});
     for (int f : faces) {
       Vec2 lo = uv[f][0], hi = lo;
