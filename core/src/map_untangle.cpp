@@ -1052,6 +1052,13 @@ MapUntangleResult untangleCrossMap(const IndexedMesh& S, const IndexedMesh& T, c
       // above started from): the restarts again, untangling with the wide rings.
       restartAtAnchors(wide);
     }
+    // All of that is kept only when it left fewer flips than the composed map had, or as few
+    // (on a pair whose layouts disagree wildly, few anchors, the moves can multiply them: cow ->
+    // bull with 3 anchors, M_ts from 12 to 193).
+    if (r.flippedAfter > before) {
+      onTarget = startOn, image = startImage;
+      r.flippedAfter = before;
+    }
   }
   // The polish, once, on the map kept: it never turns a triangle bad, so the flip count cannot
   // grow (it is counted again all the same).

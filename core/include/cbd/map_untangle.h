@@ -35,6 +35,7 @@
 ///    steepest descent) the one that lowers E_ang x E_L2^`polishStretchWeight` most
 ///    (`polishProduct`; else that raises neither metric and lowers one) and turns no triangle
 ///    bad (so the flip count cannot grow); stops when a sweep gains less than `polishTolerance`.
+/// When stages 1-6 leave more flips than the composed map had, the composed map is kept.
 /// Stages 1-6 run only when the map has flipped triangles; the polish runs on every map, so a
 /// composed map that happens to have no flip is polished like one that has. A map without angle
 /// distortion but for rounding (the identity) is returned unchanged.
