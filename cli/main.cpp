@@ -61,9 +61,9 @@ bool writeJson(const std::string& path, const json& j) {
     out << j.dump(2) << "\n";
     if (!out.good()) return false;
   }
-  std::error_code ec;
-  fs::rename(tmp, target, ec);
-  if (ec) fs::remove(tmp, ec);
+  std::error_code ec, ignored;
+  fs::rename(tmp, target, ec);  // fails onto a folder, which is reported as such
+  if (ec) fs::remove(tmp, ignored);
   return !ec;
 }
 
@@ -72,7 +72,7 @@ int finish(const cbd::Status& status, json& j, const std::string& jsonPath) {
   j["message"] = status.message;
   if (!writeJson(jsonPath, j)) {
     std::cerr << "cbd: error: output_error: cannot write JSON report '" << jsonPath
-              << "' (check that the folder exists and is writable)\n";
+              << "' (check that its folder exists and is writable, and that it does not name a folder)\n";
     return cbd::exitCode(cbd::ErrorCode::OutputError);
   }
   if (!status.ok()) {
@@ -527,9 +527,10 @@ int main(int argc, char** argv) {
   cmdMap->add_option("--straighten", map.straighten,
                      "N rounds straightening every path of both layouts inside its two patches (the diagonal of "
                      "their quadrilateral mapped onto a square; the same for either method), before the patches "
-                     "are parameterized; 0: the paths as traced")
+                     "are parameterized; 0: the paths as traced; at most 8: every round splits mesh edges along "
+                     "the paths, the time grows steeply with the rounds, and the paths settle within a few)")
       ->capture_default_str()
-      ->check(CLI::Range(0, 100));
+      ->check(CLI::Range(0, 8));
   cmdMap->add_flag("--no-untangle", map.noUntangle,
                    "keep the composed map as it is: do not move the images of the vertices of flipped M_st / M_ts "
                    "triangles over the target (the default removes most flips, then polishes the map; see README)");
@@ -560,6 +561,54 @@ int main(int argc, char** argv) {
     return cbd::exitCode(cbd::ErrorCode::InvalidArgument);
   }
 
+  // No output may land on an input file (a --json, -o or output folder naming one would replace
+  // the user's mesh or anchors).
+  {
+    namespace fs = std::filesystem;
+    std::vector<std::string> inputs, outputs;
+    std::string outDir;
+    bool mapOutputs = false;
+    if (*cmdCheck) {
+      inputs = {check.files.sourceMesh, check.files.targetMesh, check.files.sourceAnchors, check.files.targetAnchors};
+      outputs = {check.jsonPath};
+    } else if (*cmdLayout || *cmdMap) {
+      const RunArgs& r = *cmdLayout ? layout : map;
+      inputs = {r.mesh, r.anchors, r.target, r.targetAnchors};
+      outputs = {r.jsonPath};
+      outDir = r.out, mapOutputs = static_cast<bool>(*cmdMap);
+    } else if (*cmdSample) {
+      inputs = {sample.mesh};
+      outputs = {sample.out};
+    }
+    // What cbd writes under an output folder: the layouts, and for `map` M_st, M_ts, the
+    // correspondence and the morph frames.
+    auto written = [&](const fs::path& p) {
+      std::error_code ec;
+      const fs::path dir = fs::weakly_canonical(p.parent_path().empty() ? "." : p.parent_path(), ec);
+      const std::string name = p.filename().string();
+      const fs::path out = fs::weakly_canonical(outDir, ec);
+      if (outDir.empty()) return false;
+      if ((dir == out / "source" || dir == out / "target") &&
+          (name == "layout.ply" || name == "paths.ply" || name == "clusters.ply"))
+        return true;
+      if (dir == out && !mapOutputs && (name == "layout.ply" || name == "paths.ply" || name == "clusters.ply")) return true;
+      return mapOutputs && dir == out &&
+             (name == "mst.ply" || name == "mts.ply" || name == "correspondence.txt" ||
+              (name.rfind("morph_", 0) == 0 && p.extension() == ".ply"));
+    };
+    for (const std::string& in : inputs) {
+      if (in.empty()) continue;
+      std::error_code ec;
+      bool clash = written(in);
+      for (const std::string& o : outputs)
+        if (!o.empty() && o != "-" && fs::exists(o, ec) && fs::equivalent(in, o, ec)) clash = true;
+      if (clash) {
+        std::cerr << "cbd: error: invalid_argument: an output would overwrite the input '" << in
+                  << "': choose another output path\n";
+        return cbd::exitCode(cbd::ErrorCode::InvalidArgument);
+      }
+    }
+  }
   // `--json -`: the report alone on stdout, the log on stderr.
   const std::string* jsonPath = *cmdCheck ? &check.jsonPath : *cmdLayout ? &layout.jsonPath : *cmdMap ? &map.jsonPath : nullptr;
   if (jsonPath && *jsonPath == "-") {

@@ -354,7 +354,7 @@ void FilterCbdPlugin::initParameterSet(QAction* action, MeshDocument& md, RichPa
     par.addParam(RichInt(kStraightenRounds, cbd::PathSmoothingOptions{}.rounds, "Straighten paths (rounds)",
                          "Rounds straightening every path of both base domains inside its two patches "
                          "(the diagonal of their quadrilateral mapped onto a square), before the patches "
-                         "are parameterized; the same for either method (0: the paths as traced)."));
+                         "are parameterized; the same for either method (0: the paths as traced; at most 8)."));
     par.addParam(RichInt(kSmoothingIterations, 0, "Smoothing iterations",
                          "Smoothing passes over the cross-parameterization (0: none)."));
     par.addParam(RichBool(kAddMstLayer, true, "Add M_st layer",
@@ -423,9 +423,9 @@ bool FilterCbdPlugin::apply(int filter, MeshDocument& md, const RichParameterLis
   options.adaptiveEdgeNodes = boolParam(par, kAdaptiveEdgeNodes);
   if (filter == FP_CROSS_PARAMETERIZE) {
     options.straightenRounds = intParam(par, kStraightenRounds);
-    if (options.straightenRounds < 0 || options.straightenRounds > 100)
+    if (options.straightenRounds < 0 || options.straightenRounds > 8)
       throwError(cbd::ErrorCode::InvalidArgument,
-                 "'Straighten paths (rounds)' must be in 0..100, got " + std::to_string(options.straightenRounds));
+                 "'Straighten paths (rounds)' must be in 0..8 (each round refines the mesh along the paths), got " + std::to_string(options.straightenRounds));
     options.smoothingIterations = intParam(par, kSmoothingIterations);
     if (options.smoothingIterations < 0)
       throwError(cbd::ErrorCode::InvalidArgument,

@@ -300,6 +300,26 @@ PY
   else
     bad "cbd sample-anchors --seed out of range: exit $rc, $(cat badseed.err)"
   fi
+  # No output may replace an input: --json on an anchors file, sample-anchors onto its mesh, an
+  # output folder holding an input under a name cbd writes; a --json naming a folder fails.
+  cp "$MESHES/cow.off" clobber_cow.off; cp "$EXAMPLES/cow_picked_points.pp" clobber_cow.pp
+  mkdir -p clobber_out jsondir; cp "$MESHES/bull.off" clobber_out/mst.ply
+  sums=$(md5sum clobber_cow.off clobber_cow.pp clobber_out/mst.ply)
+  "$CBD" check -s clobber_cow.off -t "$MESHES/bull.off" --source-anchors clobber_cow.pp \
+    --target-anchors "$EXAMPLES/bull_picked_points.pp" --json clobber_cow.pp >/dev/null 2>clobber1.err; rc1=$?
+  "$CBD" sample-anchors -m clobber_cow.off -n 5 -o clobber_cow.off >/dev/null 2>clobber2.err; rc2=$?
+  "$CBD" map -s clobber_out/mst.ply -t "$MESHES/cow.off" --source-anchors "$EXAMPLES/bull_picked_points.pp" \
+    --target-anchors "$EXAMPLES/cow_picked_points.pp" -o clobber_out >/dev/null 2>clobber3.err; rc3=$?
+  "$CBD" check -s "$MESHES/cow.off" -t "$MESHES/bull.off" --source-anchors "$EXAMPLES/cow_picked_points.pp" \
+    --target-anchors "$EXAMPLES/bull_picked_points.pp" --json jsondir >/dev/null 2>clobber4.err; rc4=$?
+  want=$(code_of invalid_argument)
+  if [ "$rc1 $rc2 $rc3" = "$want $want $want" ] && [ "$rc4" = "$(code_of output_error)" ] && \
+     [ "$sums" = "$(md5sum clobber_cow.off clobber_cow.pp clobber_out/mst.ply)" ] && \
+     grep -q "overwrite the input" clobber1.err && grep -q "overwrite the input" clobber3.err; then
+    ok "outputs onto inputs refused (exit $rc1, $rc2, $rc3), --json onto a folder fails (exit $rc4), inputs unchanged"
+  else
+    bad "outputs onto inputs: exits $rc1 $rc2 $rc3 $rc4: $(cat clobber1.err clobber2.err clobber3.err clobber4.err)"
+  fi
   # No run above changed an input file.
   [ "$sum_before" = "$(md5sum "$MESHES/cow.off" "$MESHES/bull.off" "$EXAMPLES"/*.pp)" ] && ok "real inputs untouched" || bad "real inputs modified"
 else
