@@ -45,10 +45,10 @@ Status writeLayout(const Layout& layout, const std::string& dir) {
   SavePlyOptions faceOpt;
   faceOpt.faceColor = faceOpt.faceQuality = true;
   colourFaces(m, layout.facePatch);
-  if (Status s = savePly((fs::path(dir) / "layout.ply").string(), m, faceOpt); !s) return s;
+  if (Status s = savePly((fs::path(dir) / kLayoutFile).string(), m, faceOpt); !s) return s;
   if (!layout.faceCluster.empty()) {
     colourFaces(m, layout.faceCluster);
-    if (Status s = savePly((fs::path(dir) / "clusters.ply").string(), m, faceOpt); !s) return s;
+    if (Status s = savePly((fs::path(dir) / kClustersFile).string(), m, faceOpt); !s) return s;
   }
   Mesh paths;
   for (size_t p = 0; p < layout.edges.size(); ++p) {
@@ -71,7 +71,7 @@ Status writeLayout(const Layout& layout, const std::string& dir) {
   }
   SavePlyOptions edgeOpt;
   edgeOpt.edges = edgeOpt.vertexColor = edgeOpt.vertexQuality = true;
-  return savePly((fs::path(dir) / "paths.ply").string(), paths, edgeOpt);
+  return savePly((fs::path(dir) / kPathsFile).string(), paths, edgeOpt);
 }
 
 }  // namespace cbd

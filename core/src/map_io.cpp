@@ -102,7 +102,7 @@ Status writeMorph(const std::string& dir, const Mesh& from, const std::vector<Ve
       m.vert[v].P() = vcg::Point3d(q.x(), q.y(), q.z());
     }
     char name[32];
-    std::snprintf(name, sizeof name, "morph_%03d.ply", k);
+    std::snprintf(name, sizeof name, "%s%03d.ply", kMorphPrefix, k);
     if (Status s = savePly((std::filesystem::path(dir) / name).string(), m, opt); !s) return s;
   }
   return Status::success();

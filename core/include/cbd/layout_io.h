@@ -11,6 +11,11 @@
 
 namespace cbd {
 
+/// The files `writeLayout` writes into its folder.
+inline constexpr const char* kLayoutFile = "layout.ply";
+inline constexpr const char* kPathsFile = "paths.ply";
+inline constexpr const char* kClustersFile = "clusters.ply";
+
 /// A well-separated colour for index k (golden-ratio hues), as 8-bit RGB.
 std::array<unsigned char, 3> paletteColor(int k);
 

@@ -13,6 +13,13 @@
 
 namespace cbd {
 
+/// The files a cross-parameterization's output folder holds (the CLI's `map`): M_st, M_ts, the
+/// correspondence, and the morph frames `kMorphPrefix` + three digits + ".ply" (`writeMorph`).
+inline constexpr const char* kMstFile = "mst.ply";
+inline constexpr const char* kMtsFile = "mts.ply";
+inline constexpr const char* kCorrespondenceFile = "correspondence.txt";
+inline constexpr const char* kMorphPrefix = "morph_";
+
 /// The colour of a stretch value: blue (compressed, <= 1/2) - white (1) - red (stretched, >= 2),
 /// on a log scale; grey for NaN. Used for mst.ply and by the plugin.
 std::array<unsigned char, 3> stretchColor(double stretch);
