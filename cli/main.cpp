@@ -81,6 +81,26 @@ int finish(const cbd::Status& status, json& j, const std::string& jsonPath) {
   return cbd::exitCode(status.code);
 }
 
+/// A number in [lo, hi]; NaN, which CLI::Range lets through (every comparison with it is
+/// false), is refused with the option's name.
+CLI::Validator finiteRange(double lo, double hi) {
+  return CLI::Validator(
+      [lo, hi](std::string& text) -> std::string {
+        double v = 0;
+        try {
+          size_t used = 0;
+          v = std::stod(text, &used);
+          if (used != text.size()) throw std::invalid_argument(text);
+        } catch (const std::exception&) {
+          return "'" + text + "' is not a number";
+        }
+        if (!(v >= lo && v <= hi))
+          return "'" + text + "' is not a number in [" + CLI::detail::to_string(lo) + ", " + CLI::detail::to_string(hi) + "]";
+        return std::string();
+      },
+      "FLOAT in [" + CLI::detail::to_string(lo) + " - " + CLI::detail::to_string(hi) + "]");
+}
+
 struct PairArgs {
   cbd::InputFiles files;
   double snapTolerance = 0.01;
@@ -98,7 +118,7 @@ void addPairOptions(CLI::App* cmd, PairArgs& a) {
   cmd->add_option("--snap-tolerance", a.snapTolerance,
                   "largest allowed anchor-to-vertex distance, as a fraction of the bounding-box diagonal")
       ->capture_default_str()
-      ->check(CLI::Range(0.0, 1.0));
+      ->check(finiteRange(0.0, 1.0));
   cmd->add_option("--json", a.jsonPath, "also write a JSON report to this file ('-': to stdout, the log then goes to stderr)");
 }
 
@@ -254,6 +274,7 @@ int runSingleLayout(const RunArgs& a) {
   if (!lr.status) return finish(lr.status, j, a.jsonPath);
   const cbd::IndexedMesh source = cbd::toIndexed(mesh);
   cbd::MeshReport rep = cbd::validateMesh(source, "source", lr.hadPolygons);
+  for (const std::string& w : lr.warnings) rep.warnings.push_back("'" + a.mesh + "': " + w);
   j["source"] = meshJson(rep);
   if (!rep.status) {
     rep.status.message = "source mesh '" + a.mesh + "'" + rep.status.message.substr(std::string("source mesh").size());
@@ -387,12 +408,12 @@ int runMap(const RunArgs& a) {
   po.vertexQuality = toSource.vertexQuality;
   po.vertexTexCoord = toSource.vertexTexCoord;
   const std::string dir = a.out;
-  if (cbd::Status s = cbd::savePly(dir + "/mst.ply", mst, po); !s) return finish(s, j, a.jsonPath);
+  if (cbd::Status s = cbd::savePly(dir + "/" + cbd::kMstFile, mst, po); !s) return finish(s, j, a.jsonPath);
   po.vertexColor = toTarget.vertexColor;
   po.vertexQuality = toTarget.vertexQuality;
   po.vertexTexCoord = toTarget.vertexTexCoord;
-  if (cbd::Status s = cbd::savePly(dir + "/mts.ply", mts, po); !s) return finish(s, j, a.jsonPath);
-  if (cbd::Status s = cbd::writeCorrespondence(dir + "/correspondence.txt", r.map.sourceToTarget, r.map.sourceImage); !s)
+  if (cbd::Status s = cbd::savePly(dir + "/" + cbd::kMtsFile, mts, po); !s) return finish(s, j, a.jsonPath);
+  if (cbd::Status s = cbd::writeCorrespondence(dir + "/" + cbd::kCorrespondenceFile, r.map.sourceToTarget, r.map.sourceImage); !s)
     return finish(s, j, a.jsonPath);
   if (cbd::Status s = cbd::writeLayout(r.layouts.source, dir + "/source"); !s) return finish(s, j, a.jsonPath);
   if (cbd::Status s = cbd::writeLayout(r.layouts.target, dir + "/target"); !s) return finish(s, j, a.jsonPath);
@@ -494,13 +515,14 @@ int main(int argc, char** argv) {
                     "(Kraevoy & Sheffer 2004), which needs a target")
         ->capture_default_str()
         ->check(CLI::IsMember({"voronoi", "greedy"}));
-    cmd->add_option("--min-edge-nodes", r.minEdgeNodes, "b: minimum edge nodes per edge (adaptive: max(b, b*l/lbar))")
+    auto* b = cmd->add_option("--min-edge-nodes", r.minEdgeNodes, "b: minimum edge nodes per edge (adaptive: max(b, b*l/lbar))")
         ->capture_default_str()
         ->check(CLI::Range(1, 16));
-    cmd->add_flag("--single-edge-node", r.singleEdgeNode, "one edge node per edge, no adaptivity (the paper's E1 setting)");
+    cmd->add_flag("--single-edge-node", r.singleEdgeNode, "one edge node per edge, no adaptivity (the paper's E1 setting)")
+        ->excludes(b);
     cmd->add_option("--snap-tolerance", r.snapTolerance, "largest anchor snap distance (fraction of bbox diagonal)")
         ->capture_default_str()
-        ->check(CLI::Range(0.0, 1.0));
+        ->check(finiteRange(0.0, 1.0));
     cmd->add_option("--json", r.jsonPath, "also write a JSON report to this file ('-': to stdout, the log then goes to stderr)");
   };
   RunArgs layout;
@@ -548,6 +570,21 @@ int main(int argc, char** argv) {
   CLI::App* cmdCodes = app.add_subcommand(
       "exit-codes", "List every exit code with its status name (as in the JSON \"status\") and meaning.");
 
+  // A first word that is neither an option nor a command (CLI11 would say only that a
+  // subcommand is required).
+  if (argc >= 2 && argv[1][0] != '-') {
+    bool known = false;
+    std::string names;
+    for (const CLI::App* sub : app.get_subcommands([](CLI::App*) { return true; })) {
+      known = known || sub->get_name() == argv[1];
+      names += (names.empty() ? "" : ", ") + sub->get_name();
+    }
+    if (!known) {
+      std::cerr << "cbd: error: invalid_argument: unknown command '" << argv[1] << "': one of " << names
+                << " (see cbd --help)\n";
+      return cbd::exitCode(cbd::ErrorCode::InvalidArgument);
+    }
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -567,7 +604,7 @@ int main(int argc, char** argv) {
     namespace fs = std::filesystem;
     std::vector<std::string> inputs, outputs;
     std::string outDir;
-    bool mapOutputs = false;
+    bool mapOutputs = false, singleLayout = false;
     if (*cmdCheck) {
       inputs = {check.files.sourceMesh, check.files.targetMesh, check.files.sourceAnchors, check.files.targetAnchors};
       outputs = {check.jsonPath};
@@ -575,26 +612,25 @@ int main(int argc, char** argv) {
       const RunArgs& r = *cmdLayout ? layout : map;
       inputs = {r.mesh, r.anchors, r.target, r.targetAnchors};
       outputs = {r.jsonPath};
-      outDir = r.out, mapOutputs = static_cast<bool>(*cmdMap);
+      outDir = r.out, mapOutputs = static_cast<bool>(*cmdMap), singleLayout = *cmdLayout && r.target.empty();
     } else if (*cmdSample) {
       inputs = {sample.mesh};
       outputs = {sample.out};
     }
-    // What cbd writes under an output folder: the layouts, and for `map` M_st, M_ts, the
+    // What cbd writes under an output folder (the names the writers use): the layouts (in it
+    // for a single surface, else in source/ and target/), and for `map` M_st, M_ts, the
     // correspondence and the morph frames.
     auto written = [&](const fs::path& p) {
+      if (outDir.empty()) return false;
       std::error_code ec;
       const fs::path dir = fs::weakly_canonical(p.parent_path().empty() ? "." : p.parent_path(), ec);
       const std::string name = p.filename().string();
       const fs::path out = fs::weakly_canonical(outDir, ec);
-      if (outDir.empty()) return false;
-      if ((dir == out / "source" || dir == out / "target") &&
-          (name == "layout.ply" || name == "paths.ply" || name == "clusters.ply"))
-        return true;
-      if (dir == out && !mapOutputs && (name == "layout.ply" || name == "paths.ply" || name == "clusters.ply")) return true;
+      const bool layoutFile = name == cbd::kLayoutFile || name == cbd::kPathsFile || name == cbd::kClustersFile;
+      if (layoutFile && (singleLayout ? dir == out : (dir == out / "source" || dir == out / "target"))) return true;
       return mapOutputs && dir == out &&
-             (name == "mst.ply" || name == "mts.ply" || name == "correspondence.txt" ||
-              (name.rfind("morph_", 0) == 0 && p.extension() == ".ply"));
+             (name == cbd::kMstFile || name == cbd::kMtsFile || name == cbd::kCorrespondenceFile ||
+              (name.rfind(cbd::kMorphPrefix, 0) == 0 && p.extension() == ".ply"));
     };
     for (const std::string& in : inputs) {
       if (in.empty()) continue;

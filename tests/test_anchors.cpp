@@ -187,3 +187,31 @@ TEST(Anchors, NameOnOneSideOnly) {
   EXPECT_NE(s.message.find("'z'"), std::string::npos) << s.message;
   EXPECT_TRUE(ia.empty());
 }
+
+TEST(Anchors, AllPointsInactiveIsNamedAsSuch) {
+  // Every point unchecked in PickPoints: "no anchors" is the problem, not mismatching names.
+  const AnchorSet off = parseAnchors(
+      "<PickedPoints>\n<point x=\"1\" y=\"2\" z=\"3\" active=\"0\" name=\"a\"/>\n"
+      "<point x=\"4\" y=\"5\" z=\"6\" active=\"0\" name=\"b\"/>\n</PickedPoints>",
+      "off.pp");
+  ASSERT_TRUE(off.status.ok()) << off.status.message;
+  EXPECT_TRUE(off.anchors.empty());
+  EXPECT_EQ(off.skippedInactive, 2);
+  const AnchorSet on = parseAnchors("a 1 2 3\nb 4 5 6\n", "on.txt");
+  ASSERT_TRUE(on.status.ok()) << on.status.message;
+  std::vector<int> si, ti;
+  const Status s = matchAnchors(on, off, si, ti);
+  EXPECT_EQ(s.code, ErrorCode::TooFewAnchors);
+  EXPECT_NE(s.message.find("off.pp"), std::string::npos) << s.message;
+  EXPECT_NE(s.message.find("inactive"), std::string::npos) << s.message;
+  EXPECT_TRUE(si.empty() && ti.empty());
+  // Some inactive: the mismatch names the missing anchor and says inactive points were left out.
+  const AnchorSet some = parseAnchors(
+      "<PickedPoints>\n<point x=\"1\" y=\"2\" z=\"3\" name=\"a\"/>\n"
+      "<point x=\"4\" y=\"5\" z=\"6\" active=\"0\" name=\"b\"/>\n</PickedPoints>",
+      "some.pp");
+  const Status m = matchAnchors(on, some, si, ti);
+  EXPECT_EQ(m.code, ErrorCode::AnchorNameMismatch);
+  EXPECT_NE(m.message.find("'b'"), std::string::npos) << m.message;
+  EXPECT_NE(m.message.find("1 of the target's"), std::string::npos) << m.message;
+}

@@ -177,6 +177,23 @@ TEST(MeshIO, Errors) {
   EXPECT_EQ(loadMesh(d.file("trunc.off"), m).status.code, ErrorCode::MalformedMesh);
   write(d.file("trunc.ply"), "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\n");
   EXPECT_EQ(loadMesh(d.file("trunc.ply"), m).status.code, ErrorCode::MalformedMesh);
+  // More faces in the file than its header counts (CGAL's prim.off): read as counted, as MeshLab
+  // does, with a warning.
+  write(d.file("long.off"), "OFF\n4 3 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n");
+  const LoadResult longOff = loadMesh(d.file("long.off"), m);
+  ASSERT_TRUE(longOff.status.ok()) << longOff.status.message;
+  EXPECT_EQ(m.FN(), 3);
+  ASSERT_EQ(longOff.warnings.size(), 1u);
+  EXPECT_NE(longOff.warnings[0].find("1 lines after the header's 4 vertices and 3 faces"), std::string::npos)
+      << longOff.warnings[0];
+  EXPECT_TRUE(loadMesh(d.file("missing.off"), m).warnings.empty());
+  // A folder or a device is named as such.
+  const Status folder = loadMesh(d.path.string(), m).status;
+  EXPECT_EQ(folder.code, ErrorCode::FileNotFound);
+  EXPECT_NE(folder.message.find("is a folder"), std::string::npos) << folder.message;
+  const Status device = loadMesh("/dev/null", m).status;
+  EXPECT_EQ(device.code, ErrorCode::FileNotFound);
+  EXPECT_NE(device.message.find("not a regular file"), std::string::npos) << device.message;
   write(d.file("novert.off"), "OFF\n0 0 0\n");
   const auto code = loadMesh(d.file("novert.off"), m).status.code;
   EXPECT_TRUE(code == ErrorCode::EmptyMesh || code == ErrorCode::MalformedMesh);

@@ -1,6 +1,8 @@
 // validateMesh / validateInput: one test per mesh error code, genus of every fixture.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "cbd/validate_input.h"
 #include "support/fixtures.h"
 
@@ -169,6 +171,19 @@ TEST(ValidateInput, TooFewAnchors) {
   const IndexedMesh s = fx::icosphere(2);
   const InputReport r = validateInput(s, s, namedAt(s, {0, 1}, "s"), namedAt(s, {0, 1}, "t"));
   EXPECT_EQ(r.status.code, ErrorCode::TooFewAnchors);
+}
+
+TEST(ValidateInput, NonFiniteSnapToleranceIsRefused) {
+  const IndexedMesh s = fx::icosphere(2);
+  ValidationOptions o;
+  o.snapTolerance = std::nan("");
+  const InputReport r = validateInput(s, s, namedAt(s, {0, 1, 2}, "s"), namedAt(s, {0, 1, 2}, "t"), o);
+  EXPECT_EQ(r.status.code, ErrorCode::InvalidArgument);
+  EXPECT_NE(r.status.message.find("snap tolerance"), std::string::npos) << r.status.message;
+  o.snapTolerance = 0.01;
+  o.degenerateAreaRelative = -1;
+  EXPECT_EQ(validateInput(s, s, namedAt(s, {0, 1, 2}, "s"), namedAt(s, {0, 1, 2}, "t"), o).status.code,
+            ErrorCode::InvalidArgument);
 }
 
 TEST(ValidateInput, BadSourceMeshIsReportedFirst) {

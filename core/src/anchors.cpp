@@ -199,7 +199,9 @@ AnchorSet readAnchors(const std::string& path) {
     AnchorSet set;
     set.source = path;
     set.status = Status::error(ErrorCode::FileNotFound,
-                               "cannot read anchor file '" + path + "': no such file (check the path)");
+                               "cannot read anchor file '" + path + "': " +
+                                   (std::filesystem::is_regular_file(path, ec) ? std::string("cannot open it (check permissions)")
+                                                                               : notAFileReason(path)));
     return set;
   }
   std::ostringstream ss;
@@ -309,6 +311,13 @@ Status matchAnchors(const AnchorSet& source, const AnchorSet& target, std::vecto
   targetIndex.clear();
   if (Status s = duplicateCheck(source); !s) return s;
   if (Status s = duplicateCheck(target); !s) return s;
+  // Every point unchecked in PickPoints: say so rather than that names do not match.
+  for (const AnchorSet* set : {&source, &target})
+    if (set->anchors.empty() && set->skippedInactive > 0)
+      return Status::error(ErrorCode::TooFewAnchors,
+                           set->source + ": all " + std::to_string(set->skippedInactive) +
+                               " points are inactive (active=\"0\", unchecked in MeshLab's PickPoints); check the "
+                               "points to use as anchors and save them again");
   std::unordered_map<std::string, int> inTarget;
   for (size_t i = 0; i < target.anchors.size(); ++i) inTarget.emplace(target.anchors[i].name, static_cast<int>(i));
   std::vector<std::string> onlySource, onlyTarget;
@@ -336,7 +345,11 @@ Status matchAnchors(const AnchorSet& source, const AnchorSet& target, std::vecto
         "anchor '" + list.front() + "' is in " + (src ? source.source : target.source) + " but not in " +
             (src ? target.source : source.source) + " (" + std::to_string(onlySource.size()) +
             " source-only and " + std::to_string(onlyTarget.size()) +
-            " target-only names); corresponding anchors must have the same name on both meshes");
+            " target-only names); corresponding anchors must have the same name on both meshes" +
+            (source.skippedInactive + target.skippedInactive > 0
+                 ? " (inactive points, active=\"0\", were left out: " + std::to_string(source.skippedInactive) +
+                       " of the source's, " + std::to_string(target.skippedInactive) + " of the target's)"
+                 : std::string()));
   }
   return Status::success();
 }

@@ -97,7 +97,7 @@ std::string readObj(const std::string& path, Mesh& mesh, int& mask) {
 // ImporterOFF, which fuzzing showed indexing out of bounds on malformed files (negative
 // indices, binary junk, counts it parses differently). Vertex colours (0-255 integers or 0-1
 // floats) are kept. Returns an error text, empty on success.
-std::string readOff(const std::string& path, Mesh& mesh, int& mask) {
+std::string readOff(const std::string& path, Mesh& mesh, int& mask, std::vector<std::string>& warnings) {
   namespace io = vcg::tri::io;
   std::ifstream in(path);
   std::vector<std::vector<std::string>> lines;
@@ -181,6 +181,12 @@ std::string readOff(const std::string& path, Mesh& mesh, int& mask) {
     if (k > 3) mask |= io::Mask::IOM_BITPOLYGONAL;
     for (long i = 1; i + 1 < k; ++i) tris.push_back({idx[0], idx[i], idx[i + 1]});
   }
+  // Data past the last face: read as the header says (as MeshLab does), with a warning, since
+  // the counts may be too low and faces left out (CGAL's prim.off lists one face more).
+  if (next < lines.size())
+    warnings.push_back(std::to_string(lines.size() - next) + " lines after the header's " + std::to_string(nv) +
+                       " vertices and " + std::to_string(nf) + " faces were not read (if they are faces, correct "
+                       "the counts line)");
   fill(mesh, pos, col, tris);
   mask |= io::Mask::IOM_VERTCOORD | io::Mask::IOM_FACEINDEX;
   if (anyColor) mask |= io::Mask::IOM_VERTCOLOR;
@@ -366,8 +372,7 @@ LoadResult loadMeshUnchecked(const std::string& path, Mesh& mesh) {
   mesh.Clear();
   std::error_code ec;
   if (!fs::is_regular_file(path, ec)) {
-    r.status = Status::error(ErrorCode::FileNotFound, "cannot read mesh '" + path +
-                                                          "': no such file (check the path)");
+    r.status = Status::error(ErrorCode::FileNotFound, "cannot read mesh '" + path + "': " + notAFileReason(path));
     return r;
   }
   {
@@ -393,7 +398,7 @@ LoadResult loadMeshUnchecked(const std::string& path, Mesh& mesh) {
     if (what.empty()) err = io::ImporterPLY<Mesh>::Open(mesh, path.c_str(), mask);
     if (err != 0 && io::ImporterPLY<Mesh>::ErrorCritical(err)) what = io::ImporterPLY<Mesh>::ErrorMsg(err);
   } else if (ext == ".off") {
-    what = readOff(path, mesh, mask);
+    what = readOff(path, mesh, mask, r.warnings);
   } else if (ext == ".obj") {
     // vcglib 2020.09's ImporterOBJ drops every face that uses the file's first vertex
     // (SplitToken makes indices 0-based, then GoodObjIndex rejects index 0), so OBJ is read here.

@@ -1,5 +1,7 @@
 #include "cbd/status.h"
 
+#include <filesystem>
+
 namespace cbd {
 
 const char* errorCodeName(ErrorCode code) {
@@ -78,6 +80,15 @@ int exitCode(ErrorCode code) {
   if (code == ErrorCode::Ok) return 0;
   if (code == ErrorCode::InvalidArgument) return 2;
   return 10 + static_cast<int>(code);
+}
+
+std::string notAFileReason(const std::string& path) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  const fs::file_status st = fs::status(path, ec);
+  if (!fs::exists(st)) return "no such file (check the path)";
+  if (fs::is_directory(st)) return "is a folder, not a file (name a file in it)";
+  return "is not a regular file (a device or pipe: give a file)";
 }
 
 }  // namespace cbd

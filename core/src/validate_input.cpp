@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numeric>
+#include <tuple>
 #include <sstream>
 
 namespace cbd {
@@ -267,8 +268,14 @@ InputReport validateInput(const IndexedMesh& source, const IndexedMesh& target,
                           const AnchorSet& sourceAnchors, const AnchorSet& targetAnchors,
                           const ValidationOptions& options, bool sourceHadPolygons, bool targetHadPolygons) {
   InputReport r;
-  if (!(options.snapTolerance >= 0) || !(options.degenerateAreaRelative >= 0)) {
-    r.status = Status::error(ErrorCode::InvalidArgument, "snap tolerance and degenerate-area threshold must be >= 0");
+  if (!(options.snapTolerance >= 0) || !std::isfinite(options.snapTolerance)) {
+    r.status = Status::error(ErrorCode::InvalidArgument, "the anchor snap tolerance must be a finite number >= 0 (got " +
+                                                             std::to_string(options.snapTolerance) + ")");
+    return r;
+  }
+  if (!(options.degenerateAreaRelative >= 0) || !std::isfinite(options.degenerateAreaRelative)) {
+    r.status = Status::error(ErrorCode::InvalidArgument, "the degenerate-area threshold must be a finite number >= 0 (got " +
+                                                             std::to_string(options.degenerateAreaRelative) + ")");
     return r;
   }
   r.source = validateMesh(source, "source", sourceHadPolygons, options);
@@ -333,6 +340,10 @@ void loadAndValidate(const InputFiles& files, const ValidationOptions& options, 
   };
   rename(out.report.source, files.sourceMesh);
   rename(out.report.target, files.targetMesh);
+  // The loaders' warnings, with the file named.
+  for (const auto& [load, m, path] : {std::tuple{&out.sourceLoad, &out.report.source, &files.sourceMesh},
+                                      std::tuple{&out.targetLoad, &out.report.target, &files.targetMesh}})
+    for (const std::string& w : load->warnings) m->warnings.push_back("'" + *path + "': " + w);
   if (!out.report.source.status) out.report.status = out.report.source.status;
   else if (!out.report.target.status) out.report.status = out.report.target.status;
 }

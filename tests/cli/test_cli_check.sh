@@ -152,6 +152,29 @@ expect too_many             too_many_anchors     -- --source octa.off --target o
 "$CBD" check --source octa.off --target octa.off "${P[@]}" --json /nonexistent/dir/r.json >/dev/null 2>json.err; rc=$?
 [ "$rc" = "$(code_of output_error)" ] && ok "unwritable --json: exit $rc" || bad "unwritable --json: exit $rc"
 
+# Words and values CLI11 alone would misname: an unknown command, a NaN tolerance (which
+# passes a range check), one edge node together with a b.
+"$CBD" frobnicate >/dev/null 2>cmd.err; rc=$?
+[ "$rc" = 2 ] && grep -q "unknown command 'frobnicate': one of check, layout, map" cmd.err &&
+  ok "unknown command: exit 2, $(cat cmd.err)" || bad "unknown command: exit $rc, $(cat cmd.err)"
+"$CBD" check --source octa.off --target octa.off "${P[@]}" --snap-tolerance nan >/dev/null 2>nan_tol.err; rc=$?
+[ "$rc" = 2 ] && grep -q -- "--snap-tolerance: 'nan' is not a number in \[0, 1\]" nan_tol.err &&
+  ok "--snap-tolerance nan: exit 2, $(cat nan_tol.err)" || bad "--snap-tolerance nan: exit $rc, $(cat nan_tol.err)"
+"$CBD" layout --source octa.off --source-anchors octa.txt -o e1_out --single-edge-node --min-edge-nodes 5 >/dev/null 2>e1b.err; rc=$?
+[ "$rc" = 2 ] && grep -q "excludes" e1b.err && [ ! -e e1_out ] &&
+  ok "--single-edge-node with --min-edge-nodes: exit 2, $(cat e1b.err)" || bad "--single-edge-node with --min-edge-nodes: exit $rc, $(cat e1b.err)"
+# An OFF file with a face more than its header counts is read as counted, with a warning.
+{ cat octa.off; echo "3 0 2 4"; } > long.off
+expect long_off             ok                   -- --source long.off --target octa.off "${P[@]}"
+grep -q "long.off': 1 lines after the header's 6 vertices and 8 faces were not read" long_off.out ||
+  bad "long OFF: no warning in $(cat long_off.out)"
+# A folder as mesh, and a .pp whose points are all unchecked, are named as such.
+expect folder_mesh          file_not_found       -- --source . --target octa.off "${P[@]}"
+grep -q "is a folder" folder_mesh.err || bad "folder as mesh: $(cat folder_mesh.err)"
+printf '<PickedPoints>\n<point x="1" y="0" z="0" active="0" name="xp"/>\n<point x="-1" y="0" z="0" active="0" name="xm"/>\n</PickedPoints>\n' > inactive.pp
+expect all_inactive         too_few_anchors      -- --source octa.off --target octa.off --source-anchors octa.txt --target-anchors inactive.pp
+grep -q "all 2 points are inactive" all_inactive.err || bad "all inactive: $(cat all_inactive.err)"
+
 # Inputs untouched by any run.
 [ "$(md5sum < octa.off)" = "$(md5sum < "$WORK/octa.off")" ] || bad "octa.off modified"
 
@@ -312,9 +335,21 @@ PY
     --target-anchors "$EXAMPLES/cow_picked_points.pp" -o clobber_out >/dev/null 2>clobber3.err; rc3=$?
   "$CBD" check -s "$MESHES/cow.off" -t "$MESHES/bull.off" --source-anchors "$EXAMPLES/cow_picked_points.pp" \
     --target-anchors "$EXAMPLES/bull_picked_points.pp" --json jsondir >/dev/null 2>clobber4.err; rc4=$?
+  # A pair layout writes OUT/source/ and OUT/target/, a single-surface layout OUT itself.
+  mkdir -p clobber_lay/target; cp "$MESHES/cow.off" clobber_lay/target/paths.ply; cp "$MESHES/cow.off" clobber_lay/clusters.ply
+  sums="$sums $(md5sum clobber_lay/target/paths.ply clobber_lay/clusters.ply)"
+  "$CBD" layout -s "$MESHES/bull.off" --source-anchors "$EXAMPLES/bull_picked_points.pp" -t clobber_lay/target/paths.ply \
+    --target-anchors "$EXAMPLES/cow_picked_points.pp" -o clobber_lay >/dev/null 2>clobber5.err; rc5=$?
+  "$CBD" layout -s clobber_lay/clusters.ply --source-anchors "$EXAMPLES/cow_picked_points.pp" \
+    -o clobber_lay >/dev/null 2>clobber6.err; rc6=$?
   want=$(code_of invalid_argument)
+  if [ "$rc5 $rc6" = "$want $want" ] && grep -q "overwrite the input" clobber5.err && grep -q "overwrite the input" clobber6.err; then
+    ok "layouts onto their inputs refused (pair: OUT/target/paths.ply, single: OUT/clusters.ply)"
+  else
+    bad "layouts onto their inputs: exits $rc5 $rc6: $(cat clobber5.err clobber6.err)"
+  fi
   if [ "$rc1 $rc2 $rc3" = "$want $want $want" ] && [ "$rc4" = "$(code_of output_error)" ] && \
-     [ "$sums" = "$(md5sum clobber_cow.off clobber_cow.pp clobber_out/mst.ply)" ] && \
+     [ "$sums" = "$(md5sum clobber_cow.off clobber_cow.pp clobber_out/mst.ply) $(md5sum clobber_lay/target/paths.ply clobber_lay/clusters.ply)" ] && \
      grep -q "overwrite the input" clobber1.err && grep -q "overwrite the input" clobber3.err; then
     ok "outputs onto inputs refused (exit $rc1, $rc2, $rc3), --json onto a folder fails (exit $rc4), inputs unchanged"
   else

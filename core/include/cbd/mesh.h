@@ -55,6 +55,9 @@ struct LoadResult {
   bool hasVertexColor = false;  ///< per-vertex colour was read (e.g. COFF, PLY red/green/blue)
   bool hasVertexQuality = false;
   bool hasVertexTexCoord = false;
+  /// What was read but may not be what the file meant (e.g. lines after an OFF file's last
+  /// counted face, left unread); the mesh is usable.
+  std::vector<std::string> warnings;
 };
 
 /// Load PLY, OFF (also COFF with colours), OBJ or STL: PLY and binary STL through vcglib's

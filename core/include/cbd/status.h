@@ -63,6 +63,11 @@ const char* errorCodeDescription(ErrorCode code);
 /// All codes in enum order (for listings and tests).
 const ErrorCode* allErrorCodes(int& count);
 
+/// Why `path` cannot be read as an input file, with the fix, for FileNotFound messages: "no
+/// such file (check the path)", "is a folder, not a file (name a file in it)" or "is not a
+/// regular file (a device or pipe: give a file)".
+std::string notAFileReason(const std::string& path);
+
 /// Process exit code of the CLI for a code: 0 for Ok, 2 for invalid arguments,
 /// 10 + the enum value otherwise (distinct per class, documented in README).
 int exitCode(ErrorCode code);
