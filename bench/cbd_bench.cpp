@@ -468,11 +468,11 @@ IndexedMesh subdivide(const IndexedMesh& m) {
   return out;
 }
 
-/// Layout time against anchors (on one mesh) and against mesh size (subdivision), both
-/// methods, the mesh paired with a turned copy of itself; plus one full Dijkstra sweep as the lower bound.
 /// Anchors of the size sweep of `scaling` (farthest-point samples of each subdivision level).
 constexpr int kSizeSweepAnchors = 32;
 
+/// Layout time against anchors (on one mesh) and against mesh size (subdivision), both
+/// methods, the mesh paired with a turned copy of itself; plus one full Dijkstra sweep as the lower bound.
 int scaling(const std::string& meshPath, const fs::path& out, int maxLevel, const std::vector<int>& counts) {
   Mesh vm;
   if (!loadMesh(meshPath, vm).status) {
@@ -650,7 +650,7 @@ int main(int argc, char** argv) {
                  "edge node per edge; C: adaptive) -> OUTDIR/table.csv, OUTDIR/table.md; greedy and C also\n"
                  "with ORDERS - 1 (default 2) more seeded polish vertex orders -> OUTDIR/table_orders.csv.\n"
                  "scaling: layout time against anchor count (N1,N2,... farthest-point anchors on MESH) and\n"
-                 "against mesh size (MESH and its 1-to-4 subdivisions up to MAX_SUBDIVISION_LEVEL, 32 anchors),\n"
+                 "against mesh size (MESH and its 1-to-4 subdivisions up to MAX_SUBDIVISION_LEVEL, %d anchors),\n"
                  "with one full Dijkstra sweep of the edge-node graph as the lower bound -> OUTDIR/scaling.csv;\n"
                  "with a subdivision level > 0, also the whole pipeline at the largest size -> OUTDIR/full.csv.\n"
                  "stress: random and farthest-point anchor sets on synthetic genus 0/1/2 pairs, both methods\n"
@@ -661,7 +661,8 @@ int main(int argc, char** argv) {
                  "manifest, each source face's share of E_ang and of E_L2^2 summed per region of its nearest\n"
                  "anchor -> OUTDIR/regions.csv.\n"
                  "defaults: cbd's default settings and the bench's constants that the report names\n"
-                 "-> OUTDIR/defaults.csv.\n");
+                 "-> OUTDIR/defaults.csv.\n",
+                 kSizeSweepAnchors);
     return help ? 0 : 2;
   };
   (void)root;

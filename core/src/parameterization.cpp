@@ -1,6 +1,7 @@
 #include "cbd/parameterization.h"
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <mutex>
 #include <string>
@@ -242,10 +243,7 @@ class GridLocator {
     auto entries = [&] {
       double total = 0;
       for (int f : faces) {
-        Vec2 lo = uv[f][0], hi = lo;
-        for (const Vec2& p : uv[f]) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
-        const auto [x0, y0] = cell(lo);
-        const auto [x1, y1] = cell(hi);
+        const auto [x0, y0, x1, y1] = cellRange(uv[f]);
         total += static_cast<double>(x1 - x0 + 1) * (y1 - y0 + 1);
       }
       return total;
@@ -253,10 +251,7 @@ class GridLocator {
     while (n_ > 1 && entries() > budget) n_ = std::max(1, n_ / 2);
     cells_.assign(static_cast<size_t>(n_) * n_, {});
     for (int f : faces) {
-      Vec2 lo = uv[f][0], hi = lo;
-      for (const Vec2& p : uv[f]) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
-      const auto [x0, y0] = cell(lo);
-      const auto [x1, y1] = cell(hi);
+      const auto [x0, y0, x1, y1] = cellRange(uv[f]);
       for (int x = x0; x <= x1; ++x)
         for (int y = y0; y <= y1; ++y) cells_[static_cast<size_t>(y) * n_ + x].push_back(f);
     }
@@ -298,6 +293,14 @@ class GridLocator {
   std::pair<int, int> cell(const Vec2& p) const {
     auto clampi = [&](double t) { return std::clamp(static_cast<int>(std::floor(t * n_)), 0, n_ - 1); };
     return {clampi(p.x()), clampi(p.y() / (std::sqrt(3.0) / 2.0))};
+  }
+  /// The cells (x0, y0, x1, y1, inclusive) the bounding box of triangle t meets.
+  std::array<int, 4> cellRange(const std::array<Vec2, 3>& t) const {
+    Vec2 lo = t[0], hi = lo;
+    for (const Vec2& p : t) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+    const auto [x0, y0] = cell(lo);
+    const auto [x1, y1] = cell(hi);
+    return {x0, y0, x1, y1};
   }
   const std::vector<std::array<Vec2, 3>>& uv_;
   int n_ = 1;
