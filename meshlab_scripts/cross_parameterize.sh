@@ -58,9 +58,9 @@ command -v Xvfb >/dev/null || die "Xvfb not found (apt-get install xvfb)"
 # The plugin and the prefix.
 PLUGIN_SO="${CBD_PLUGIN_SO:-}"
 if [ -z "$PLUGIN_SO" ]; then
-  for cand in "$ROOT/build/plugin/libfilter_cbd.so" "$ROOT/build-plugin/plugin/libfilter_cbd.so"; do
-    if [ -f "$cand" ] && { [ -z "$PLUGIN_SO" ] || [ "$cand" -nt "$PLUGIN_SO" ]; }; then PLUGIN_SO="$cand"; fi
-  done
+  # shellcheck source=../scripts/plugin_path.sh
+  . "$ROOT/scripts/plugin_path.sh"
+  PLUGIN_SO="$(cbd_built_plugin "$ROOT")" || PLUGIN_SO=""
   [ -n "$PLUGIN_SO" ] || die "no built plugin: build the filter_cbd target (cmake --build build --target filter_cbd) or set CBD_PLUGIN_SO"
 fi
 [ -f "$PLUGIN_SO" ] || die "plugin '$PLUGIN_SO' not found"

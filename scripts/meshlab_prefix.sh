@@ -43,9 +43,9 @@ done
 
 if [ -z "$PLUGIN_SO" ]; then
   # The newer of the two build trees' plugins (as meshlab_scripts/cross_parameterize.sh picks).
-  for cand in "$ROOT/build/plugin/$PLUGIN_NAME" "$ROOT/build-plugin/plugin/$PLUGIN_NAME"; do
-    if [ -f "$cand" ] && { [ -z "$PLUGIN_SO" ] || [ "$cand" -nt "$PLUGIN_SO" ]; }; then PLUGIN_SO="$cand"; fi
-  done
+  # shellcheck source=plugin_path.sh
+  . "$ROOT/scripts/plugin_path.sh"
+  PLUGIN_SO="$(cbd_built_plugin "$ROOT")" || PLUGIN_SO=""
   [ -n "$PLUGIN_SO" ] || log "warning: no built $PLUGIN_NAME found; making the prefix without the cbd plugin"
 else
   [ -f "$PLUGIN_SO" ] || die "plugin '$PLUGIN_SO' not found (build it: cmake --build <build dir> --target filter_cbd)"
