@@ -1057,7 +1057,7 @@ MapUntangleResult untangleCrossMap(const IndexedMesh& S, const IndexedMesh& T, c
     // bull with 3 anchors, M_ts from 12 to 193).
     if (r.flippedAfter > before) {
       onTarget = startOn, image = startImage;
-      r.flippedAfter = before;
+      r.flippedAfter = before, r.moves = 0;  // the moves discarded are not reported
     }
   }
   // The polish, once, on the map kept: it never turns a triangle bad, so the flip count cannot
@@ -1066,6 +1066,11 @@ MapUntangleResult untangleCrossMap(const IndexedMesh& S, const IndexedMesh& T, c
   r.flippedAfter = flips(onTarget, image);
   r.movedVertices = 0;
   for (size_t v = 0; v < image.size(); ++v) r.movedVertices += image[v] != startImage[v];
+  // Degenerate triangles of the map returned (area at most 1e-12 of the squared diagonal, as
+  // the metrics count them).
+  r.degenerateAfter = 0;
+  for (const auto& t : S.faces)
+    r.degenerateAfter += 0.5 * (image[t[1]] - image[t[0]]).cross(image[t[2]] - image[t[0]]).norm() <= 1e-12 * diag2;
   return r;
 }
 

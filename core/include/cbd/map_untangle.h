@@ -124,9 +124,9 @@ struct MapUntangleOptions {
 struct MapUntangleResult {
   Status status;
   int flippedBefore = 0;  ///< flipped image triangles before (same test as the metrics)
-  int flippedAfter = 0;
-  int degenerateAfter = 0;
-  int moves = 0;          ///< accepted vertex moves
+  int flippedAfter = 0;    ///< flipped image triangles of the map returned
+  int degenerateAfter = 0; ///< image triangles of the map returned with (nearly) no area
+  int moves = 0;           ///< accepted vertex moves that made the map returned
   int movedVertices = 0;  ///< distinct vertices whose image changed
   int attempts = 0;       ///< runs of the whole untangling (0: there was no flip)
 };
