@@ -431,6 +431,10 @@ int runMap(const RunArgs& a) {
                   a.straighten, a.straighten == 1 ? "" : "s", s.straightened, t.straightened, s.lengthBefore,
                   s.lengthAfter, t.lengthBefore, t.lengthAfter);
   }
+  if (a.smooth > 0)
+    std::printf("smooth  %d sweep%s over M_st: %d moves kept, %d rejected (a flip or outside the chart), flipped %d -> %d\n",
+                a.smooth, a.smooth == 1 ? "" : "s", r.smoothing.moves, r.smoothing.rejected, r.smoothing.flippedBefore,
+                r.smoothing.flippedAfter);
   std::printf("map     E_ang %.4f (%.2f deg), E_L2 %.4f (inverse %.4f), %d flipped, %d degenerate triangles\n", m.eAng,
               m.eAngDegrees, m.eL2, m.eL2Inverse, m.flipped, m.degenerate);
   if (!a.noUntangle)

@@ -152,6 +152,22 @@ TEST(Anchors, OffSurface) {
   EXPECT_NE(st.message.find("'far'"), std::string::npos);
 }
 
+TEST(Anchors, IndexLineWithOtherCoordinatesNamesTheVertexAndTheLine) {
+  // "index x y z" whose coordinates are another point's: the listed vertex stays the anchor, and
+  // the error says it is away from the coordinates (not that some nearest vertex is).
+  const IndexedMesh m = fx::icosphere(2);
+  const Vec3& p = m.positions[5];
+  const AnchorSet s = parseAnchors("0\n1\n7 " + std::to_string(p.x()) + " " + std::to_string(p.y()) + " " +
+                                       std::to_string(p.z()) + "\n",
+                                   "idx.vts");
+  ASSERT_TRUE(s.status.ok()) << s.status.message;
+  std::vector<SnappedAnchor> out;
+  const Status st = snapAnchors(m, s, 0.01, "source", out);
+  EXPECT_EQ(st.code, ErrorCode::AnchorOffSurface);
+  EXPECT_NE(st.message.find("line 3: vertex 7 of the source mesh lies away from the coordinates"), std::string::npos)
+      << st.message;
+}
+
 TEST(Anchors, TwoAnchorsOnOneVertex) {
   const IndexedMesh m = fx::icosphere(2);
   AnchorSet s = parseAnchors("a 1 0 0\nb 0.999 0.001 0\n", "s");

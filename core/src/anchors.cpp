@@ -287,6 +287,13 @@ Status snapAnchors(const IndexedMesh& mesh, const AnchorSet& anchors, double tol
       char buf[160];
       std::snprintf(buf, sizeof buf, "%.3g%% of the bounding-box diagonal (tolerance %.3g%%)",
                     100.0 * s.snapDistance, 100.0 * tolerance);
+      if (a.vertex >= 0)  // an index line whose coordinates are not that vertex's
+        return Status::error(ErrorCode::AnchorOffSurface,
+                             anchors.source + ": line " + std::to_string(a.line) + ": vertex " +
+                                 std::to_string(a.vertex) + " of the " + meshName +
+                                 " mesh lies away from the coordinates on the line, at " + buf +
+                                 "; is this the anchor file of that mesh, and its vertex order unchanged? (or "
+                                 "raise --snap-tolerance)");
       return Status::error(ErrorCode::AnchorOffSurface,
                            anchors.source + ": anchor '" + a.name + "' (line " + std::to_string(a.line) +
                                ") is off the " + meshName + " surface: its nearest vertex is " +

@@ -247,14 +247,21 @@ PY
     fi
   done
   # --straighten 0: the paths as traced, no straighten report, other paths than the default's.
+  # With --smooth 3: its sweeps reported in the log as in the JSON.
   "$CBD" map --source "$MESHES/bull.off" --source-anchors "$EXAMPLES/bull_picked_points.pp" \
-    --target "$MESHES/cow.off" --target-anchors "$EXAMPLES/cow_picked_points.pp" --straighten 0 \
-    --out map_traced --json map_traced.json >/dev/null 2>&1; rc=$?
+    --target "$MESHES/cow.off" --target-anchors "$EXAMPLES/cow_picked_points.pp" --straighten 0 --smooth 3 \
+    --out map_traced --json map_traced.json >map_traced.out 2>&1; rc=$?
   res=$(python3 -c "import json;d=json.load(open('map_traced.json'));print(d['status'], 'straighten' in d, d['layout']['edges'])" 2>/dev/null)
   if [ "$rc" = 0 ] && [ "$res" = "ok False 78" ] && ! cmp -s map_traced/target/paths.ply map_voronoi/target/paths.ply; then
     ok "cbd map --straighten 0: paths as traced ($res)"
   else
     bad "cbd map --straighten 0: exit $rc, $res"
+  fi
+  smooth=$(python3 -c "import json;s=json.load(open('map_traced.json'))['smoothing'];print('smooth  3 sweeps over M_st: %d moves kept, %d rejected' % (s['moves'], s['rejected']))" 2>/dev/null)
+  if [ -n "$smooth" ] && grep -qF "$smooth" map_traced.out; then
+    ok "cbd map --smooth 3: $(grep '^smooth' map_traced.out)"
+  else
+    bad "cbd map --smooth 3: log line missing or unlike the JSON ('$smooth'): $(grep '^smooth' map_traced.out)"
   fi
   # Determinism: the same run again gives byte-identical files.
   "$CBD" map --source "$MESHES/bull.off" --source-anchors "$EXAMPLES/bull_picked_points.pp" \
