@@ -141,3 +141,48 @@ TEST(Pipeline, AMeshOntoItselfIsTheIdentity) {
       EXPECT_EQ(r.layouts.sameSurface, method == LayoutMethod::Voronoi);
     }
 }
+
+TEST(Pipeline, AScalingByAPowerOfTwoChangesNothingButTheScale) {
+  // Every tolerance of the pipeline is relative to the meshes' size: both meshes scaled by 8
+  // (exact in floating point, so no rounding differs) give the same layouts, the same metrics and
+  // images scaled by 8, for both methods. (A scaling by 10 rounds every coordinate, which can
+  // break ties of the searches differently.)
+  const IndexedMesh s = fx::icosphere(3);
+  IndexedMesh t = fx::icosphere(4);
+  const std::vector<int> sa = farthestPointSampling(s, 8);
+  std::vector<int> ta;
+  for (int v : sa) ta.push_back(fx::nearestVertex(t, s.positions[v]));
+  // A twisted, bent ellipsoid: the composed map has flipped triangles to untangle.
+  for (auto& p : t.positions) {
+    const double a = 2.5 * p.x(), c = std::cos(a), sn = std::sin(a);
+    p = Vec3(2.0 * p.x() + 0.5 * p.y() * p.y(), c * p.y() - sn * 0.6 * p.z(), sn * p.y() + c * 0.6 * p.z());
+  }
+  IndexedMesh s8 = s, t8 = t;
+  for (auto& p : s8.positions) p *= 8.0;
+  for (auto& p : t8.positions) p *= 8.0;
+  for (LayoutMethod method : {LayoutMethod::Voronoi, LayoutMethod::Greedy}) {
+    SCOPED_TRACE(layoutMethodName(method));
+    CrossParameterizationOptions o;
+    o.method = method;
+    const CrossParameterizationResult a = crossParameterize(s, sa, t, ta, 2, o);
+    const CrossParameterizationResult b = crossParameterize(s8, sa, t8, ta, 2, o);
+    ASSERT_TRUE(a.status.ok()) << a.status.message;
+    ASSERT_TRUE(b.status.ok()) << b.status.message;
+    // The untangling's stages (not only the polish) did act.
+    EXPECT_GT(a.untangleSource.flippedBefore + a.untangleTarget.flippedBefore, 0);
+    ASSERT_EQ(a.layouts.source.edges.size(), b.layouts.source.edges.size());
+    for (size_t e = 0; e < a.layouts.source.edges.size(); ++e) {
+      EXPECT_EQ(a.layouts.source.edges[e].vertices, b.layouts.source.edges[e].vertices);
+      EXPECT_EQ(a.layouts.target.edges[e].vertices, b.layouts.target.edges[e].vertices);
+    }
+    EXPECT_EQ(a.metrics.eAng, b.metrics.eAng);
+    EXPECT_EQ(a.metrics.eL2, b.metrics.eL2);
+    EXPECT_EQ(a.metrics.eL2Inverse, b.metrics.eL2Inverse);
+    EXPECT_EQ(a.metrics.flipped, b.metrics.flipped);
+    EXPECT_EQ(a.untangleSource.moves, b.untangleSource.moves);
+    ASSERT_EQ(a.map.sourceImage.size(), b.map.sourceImage.size());
+    int differ = 0;
+    for (size_t v = 0; v < a.map.sourceImage.size(); ++v) differ += 8.0 * a.map.sourceImage[v] != b.map.sourceImage[v];
+    EXPECT_EQ(differ, 0);
+  }
+}
