@@ -28,7 +28,8 @@ json meshJson(const cbd::MeshReport& m) {
               {"faces", m.faces},
               {"genus", m.genus},
               {"unreferenced_vertices", m.unreferencedVertices},
-              {"bbox_diagonal", m.bboxDiagonal}};
+              {"bbox_diagonal", m.bboxDiagonal},
+              {"warnings", m.warnings}};
 }
 
 /// With `--json -`: the real standard output, kept for the report alone, while the human-readable

@@ -168,6 +168,8 @@ expect too_many             too_many_anchors     -- --source octa.off --target o
 expect long_off             ok                   -- --source long.off --target octa.off "${P[@]}"
 grep -q "long.off': 1 lines after the header's 6 vertices and 8 faces were not read" long_off.out ||
   bad "long OFF: no warning in $(cat long_off.out)"
+python3 -c "import json,sys; w=json.load(open('long_off.json'))['source']['warnings']; sys.exit(not (len(w) == 1 and 'not read' in w[0]))" ||
+  bad "long OFF: no warning in the JSON: $(cat long_off.json)"
 # A folder as mesh, and a .pp whose points are all unchecked, are named as such.
 expect folder_mesh          file_not_found       -- --source . --target octa.off "${P[@]}"
 grep -q "is a folder" folder_mesh.err || bad "folder as mesh: $(cat folder_mesh.err)"
