@@ -538,7 +538,7 @@ int scaling(const std::string& meshPath, const fs::path& out, int maxLevel, cons
   if (maxLevel > 0) {
     std::ofstream full(out / "full.csv");
     full << "vertices,anchors,method,status,e_ang,e_l2,flipped,flipped_before_untangle,t_layout,t_total,peak_mb,error\n";
-    const std::vector<int> a = farthestPointSampling(m, 32);
+    const std::vector<int> a = farthestPointSampling(m, kSizeSweepAnchors);
     const IndexedMesh turned = turnedCopy(m);
     for (const Method& meth : methods()) {
       if (meth.name != "greedy" && meth.name != "voronoi-C") continue;

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <stdexcept>
 #include <string>
 
 #include <unistd.h>
@@ -92,6 +93,8 @@ CLI::Validator finiteRange(double lo, double hi) {
           size_t used = 0;
           v = std::stod(text, &used);
           if (used != text.size()) throw std::invalid_argument(text);
+        } catch (const std::out_of_range&) {
+          return "'" + text + "' is beyond the range of a double";
         } catch (const std::exception&) {
           return "'" + text + "' is not a number";
         }
@@ -289,7 +292,11 @@ int runSingleLayout(const RunArgs& a) {
   j["source"]["anchors"] = snapped.size();
   if (snapped.size() < 3)
     return finish(cbd::Status::error(cbd::ErrorCode::TooFewAnchors,
-                                     a.anchors + ": " + std::to_string(snapped.size()) + " anchors; a layout needs at least 3"),
+                                     a.anchors + ": " + std::to_string(snapped.size()) + " anchors" +
+                                         (set.skippedInactive > 0 ? " (and " + std::to_string(set.skippedInactive) +
+                                                                        " inactive points, active=\"0\", left out)"
+                                                                  : std::string()) +
+                                         "; a layout needs at least 3"),
                   j, a.jsonPath);
   std::vector<int> anchors;
   for (const auto& s : snapped) anchors.push_back(s.vertex);
@@ -608,8 +615,6 @@ int main(int argc, char** argv) {
   {
     namespace fs = std::filesystem;
     std::vector<std::string> inputs, outputs;
-    std::string outDir;
-    bool mapOutputs = false, singleLayout = false;
     if (*cmdCheck) {
       inputs = {check.files.sourceMesh, check.files.targetMesh, check.files.sourceAnchors, check.files.targetAnchors};
       outputs = {check.jsonPath};
@@ -617,32 +622,31 @@ int main(int argc, char** argv) {
       const RunArgs& r = *cmdLayout ? layout : map;
       inputs = {r.mesh, r.anchors, r.target, r.targetAnchors};
       outputs = {r.jsonPath};
-      outDir = r.out, mapOutputs = static_cast<bool>(*cmdMap), singleLayout = *cmdLayout && r.target.empty();
+      // Every file cbd writes under the output folder (the names the writers use): the layouts
+      // (in it for a single surface, else in source/ and target/), and for `map` M_st, M_ts,
+      // the correspondence and the morph frames.
+      const fs::path out(r.out);
+      const std::vector<fs::path> dirs =
+          *cmdLayout && r.target.empty() ? std::vector<fs::path>{out} : std::vector<fs::path>{out / "source", out / "target"};
+      for (const fs::path& d : dirs)
+        for (const char* name : {cbd::kLayoutFile, cbd::kPathsFile, cbd::kClustersFile}) outputs.push_back((d / name).string());
+      if (*cmdMap) {
+        for (const char* name : {cbd::kMstFile, cbd::kMtsFile, cbd::kCorrespondenceFile}) outputs.push_back((out / name).string());
+        for (int k = 0; k < map.morph; ++k) outputs.push_back((out / cbd::morphFileName(k)).string());
+      }
     } else if (*cmdSample) {
       inputs = {sample.mesh};
       outputs = {sample.out};
     }
-    // What cbd writes under an output folder (the names the writers use): the layouts (in it
-    // for a single surface, else in source/ and target/), and for `map` M_st, M_ts, the
-    // correspondence and the morph frames.
-    auto written = [&](const fs::path& p) {
-      if (outDir.empty()) return false;
-      std::error_code ec;
-      const fs::path dir = fs::weakly_canonical(p.parent_path().empty() ? "." : p.parent_path(), ec);
-      const std::string name = p.filename().string();
-      const fs::path out = fs::weakly_canonical(outDir, ec);
-      const bool layoutFile = name == cbd::kLayoutFile || name == cbd::kPathsFile || name == cbd::kClustersFile;
-      if (layoutFile && (singleLayout ? dir == out : (dir == out / "source" || dir == out / "target"))) return true;
-      return mapOutputs && dir == out &&
-             (name == cbd::kMstFile || name == cbd::kMtsFile || name == cbd::kCorrespondenceFile ||
-              (name.rfind(cbd::kMorphPrefix, 0) == 0 && p.extension() == ".ply"));
-    };
+    // An output that exists and is the same file as an input (through any path, symlink or
+    // hard link) would replace it; one that does not exist cannot be an input.
     for (const std::string& in : inputs) {
       if (in.empty()) continue;
-      std::error_code ec;
-      bool clash = written(in);
-      for (const std::string& o : outputs)
+      bool clash = false;
+      for (const std::string& o : outputs) {
+        std::error_code ec;
         if (!o.empty() && o != "-" && fs::exists(o, ec) && fs::equivalent(in, o, ec)) clash = true;
+      }
       if (clash) {
         std::cerr << "cbd: error: invalid_argument: an output would overwrite the input '" << in
                   << "': choose another output path\n";

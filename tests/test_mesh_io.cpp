@@ -184,7 +184,7 @@ TEST(MeshIO, Errors) {
   ASSERT_TRUE(longOff.status.ok()) << longOff.status.message;
   EXPECT_EQ(m.FN(), 3);
   ASSERT_EQ(longOff.warnings.size(), 1u);
-  EXPECT_NE(longOff.warnings[0].find("1 lines after the header's 4 vertices and 3 faces"), std::string::npos)
+  EXPECT_NE(longOff.warnings[0].find("1 line after the header's 4 vertices and 3 faces"), std::string::npos)
       << longOff.warnings[0];
   EXPECT_TRUE(loadMesh(d.file("missing.off"), m).warnings.empty());
   // A folder or a device is named as such.

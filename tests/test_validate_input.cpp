@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 
 #include "cbd/validate_input.h"
 #include "support/fixtures.h"
@@ -176,10 +177,12 @@ TEST(ValidateInput, TooFewAnchors) {
 TEST(ValidateInput, NonFiniteSnapToleranceIsRefused) {
   const IndexedMesh s = fx::icosphere(2);
   ValidationOptions o;
-  o.snapTolerance = std::nan("");
-  const InputReport r = validateInput(s, s, namedAt(s, {0, 1, 2}, "s"), namedAt(s, {0, 1, 2}, "t"), o);
-  EXPECT_EQ(r.status.code, ErrorCode::InvalidArgument);
-  EXPECT_NE(r.status.message.find("snap tolerance"), std::string::npos) << r.status.message;
+  for (const double bad : {std::nan(""), std::numeric_limits<double>::infinity()}) {
+    o.snapTolerance = bad;
+    const InputReport r = validateInput(s, s, namedAt(s, {0, 1, 2}, "s"), namedAt(s, {0, 1, 2}, "t"), o);
+    EXPECT_EQ(r.status.code, ErrorCode::InvalidArgument);
+    EXPECT_NE(r.status.message.find("snap tolerance must be a finite number"), std::string::npos) << r.status.message;
+  }
   o.snapTolerance = 0.01;
   o.degenerateAreaRelative = -1;
   EXPECT_EQ(validateInput(s, s, namedAt(s, {0, 1, 2}, "s"), namedAt(s, {0, 1, 2}, "t"), o).status.code,

@@ -193,15 +193,20 @@ AnchorSet parseAnchors(const std::string& text, const std::string& label) {
 }
 
 AnchorSet readAnchors(const std::string& path) {
+  // Checked before opening: opening a named pipe would wait for a writer.
   std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) {
+    AnchorSet set;
+    set.source = path;
+    set.status = Status::error(ErrorCode::FileNotFound, "cannot read anchor file '" + path + "': " + notAFileReason(path));
+    return set;
+  }
   std::ifstream in(path, std::ios::binary);
-  if (!std::filesystem::is_regular_file(path, ec) || !in) {
+  if (!in) {
     AnchorSet set;
     set.source = path;
     set.status = Status::error(ErrorCode::FileNotFound,
-                               "cannot read anchor file '" + path + "': " +
-                                   (std::filesystem::is_regular_file(path, ec) ? std::string("cannot open it (check permissions)")
-                                                                               : notAFileReason(path)));
+                               "cannot open anchor file '" + path + "' for reading (check permissions)");
     return set;
   }
   std::ostringstream ss;
@@ -324,7 +329,7 @@ Status matchAnchors(const AnchorSet& source, const AnchorSet& target, std::vecto
       return Status::error(ErrorCode::TooFewAnchors,
                            set->source + ": all " + std::to_string(set->skippedInactive) +
                                " points are inactive (active=\"0\", unchecked in MeshLab's PickPoints); check the "
-                               "points to use as anchors and save them again");
+                               "points to use as anchors (and save the .pp file again, if the points come from one)");
   std::unordered_map<std::string, int> inTarget;
   for (size_t i = 0; i < target.anchors.size(); ++i) inTarget.emplace(target.anchors[i].name, static_cast<int>(i));
   std::vector<std::string> onlySource, onlyTarget;

@@ -79,6 +79,12 @@ Status writeCorrespondence(const std::string& path, const std::vector<FacePoint>
   return Status::success();
 }
 
+std::string morphFileName(int k) {
+  char name[32];
+  std::snprintf(name, sizeof name, "%s%03d.ply", kMorphPrefix, k);
+  return name;
+}
+
 Status writeMorph(const std::string& dir, const Mesh& from, const std::vector<Vec3>& image,
                   const std::vector<int>& anchors, int count) {
   if (count < 2) return Status::error(ErrorCode::InvalidArgument, "a morph needs at least 2 frames");
@@ -101,9 +107,7 @@ Status writeMorph(const std::string& dir, const Mesh& from, const std::vector<Ve
       const Vec3 q = (1.0 - t) * aligned + t * image[v];
       m.vert[v].P() = vcg::Point3d(q.x(), q.y(), q.z());
     }
-    char name[32];
-    std::snprintf(name, sizeof name, "%s%03d.ply", kMorphPrefix, k);
-    if (Status s = savePly((std::filesystem::path(dir) / name).string(), m, opt); !s) return s;
+    if (Status s = savePly((std::filesystem::path(dir) / morphFileName(k)).string(), m, opt); !s) return s;
   }
   return Status::success();
 }

@@ -184,7 +184,8 @@ std::string readOff(const std::string& path, Mesh& mesh, int& mask, std::vector<
   // Data past the last face: read as the header says (as MeshLab does), with a warning, since
   // the counts may be too low and faces left out (CGAL's prim.off lists one face more).
   if (next < lines.size())
-    warnings.push_back(std::to_string(lines.size() - next) + " lines after the header's " + std::to_string(nv) +
+    warnings.push_back(std::to_string(lines.size() - next) + (lines.size() - next == 1 ? " line" : " lines") +
+                       " after the header's " + std::to_string(nv) +
                        " vertices and " + std::to_string(nf) + " faces were not read (if they are faces, correct "
                        "the counts line)");
   fill(mesh, pos, col, tris);

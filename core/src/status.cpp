@@ -86,7 +86,9 @@ std::string notAFileReason(const std::string& path) {
   namespace fs = std::filesystem;
   std::error_code ec;
   const fs::file_status st = fs::status(path, ec);
-  if (!fs::exists(st)) return "no such file (check the path)";
+  if (st.type() == fs::file_type::not_found) return "no such file (check the path)";
+  if (ec || st.type() == fs::file_type::none)
+    return "cannot be accessed (check the permissions of the folders on its path)";
   if (fs::is_directory(st)) return "is a folder, not a file (name a file in it)";
   return "is not a regular file (a device or pipe: give a file)";
 }

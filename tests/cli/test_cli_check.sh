@@ -166,13 +166,18 @@ expect too_many             too_many_anchors     -- --source octa.off --target o
 # An OFF file with a face more than its header counts is read as counted, with a warning.
 { cat octa.off; echo "3 0 2 4"; } > long.off
 expect long_off             ok                   -- --source long.off --target octa.off "${P[@]}"
-grep -q "long.off': 1 lines after the header's 6 vertices and 8 faces were not read" long_off.out ||
+grep -q "long.off': 1 line after the header's 6 vertices and 8 faces were not read" long_off.out ||
   bad "long OFF: no warning in $(cat long_off.out)"
 python3 -c "import json,sys; w=json.load(open('long_off.json'))['source']['warnings']; sys.exit(not (len(w) == 1 and 'not read' in w[0]))" ||
   bad "long OFF: no warning in the JSON: $(cat long_off.json)"
 # A folder as mesh, and a .pp whose points are all unchecked, are named as such.
 expect folder_mesh          file_not_found       -- --source . --target octa.off "${P[@]}"
 grep -q "is a folder" folder_mesh.err || bad "folder as mesh: $(cat folder_mesh.err)"
+# A named pipe as anchors: refused at once (opening it would wait for a writer).
+rm -f pipe.pp; mkfifo pipe.pp
+timeout 20 "$CBD" check --source octa.off --target octa.off --source-anchors pipe.pp --target-anchors octa.txt >/dev/null 2>pipe.err; rc=$?
+[ "$rc" = "$(code_of file_not_found)" ] && grep -q "pipe.pp': is not a regular file" pipe.err &&
+  ok "a named pipe as anchors: exit $rc, $(cat pipe.err)" || bad "a named pipe as anchors: exit $rc, $(cat pipe.err)"
 printf '<PickedPoints>\n<point x="1" y="0" z="0" active="0" name="xp"/>\n<point x="-1" y="0" z="0" active="0" name="xm"/>\n</PickedPoints>\n' > inactive.pp
 expect all_inactive         too_few_anchors      -- --source octa.off --target octa.off --source-anchors octa.txt --target-anchors inactive.pp
 grep -q "all 2 points are inactive" all_inactive.err || bad "all inactive: $(cat all_inactive.err)"
@@ -351,7 +356,32 @@ PY
     --target-anchors "$EXAMPLES/cow_picked_points.pp" -o clobber_lay >/dev/null 2>clobber5.err; rc5=$?
   "$CBD" layout -s clobber_lay/clusters.ply --source-anchors "$EXAMPLES/cow_picked_points.pp" \
     -o clobber_lay >/dev/null 2>clobber6.err; rc6=$?
+  # An input reached through a symlink, and an input where only the other kind of layout writes
+  # (a pair layout does not write OUT/layout.ply): the first refused, the second accepted.
+  ln -sf "$PWD/clobber_lay/target/paths.ply" clobber_link.ply
+  "$CBD" layout -s "$MESHES/bull.off" --source-anchors "$EXAMPLES/bull_picked_points.pp" -t clobber_link.ply \
+    --target-anchors "$EXAMPLES/cow_picked_points.pp" -o clobber_lay >/dev/null 2>clobber7.err; rc7=$?
+  mkdir -p clobber_ok
+  python3 - "$MESHES/cow.off" clobber_ok/layout.ply <<'PY'
+import sys
+lines = [l.split() for l in open(sys.argv[1]) if l.strip() and not l.startswith('#')]
+nv, nf = int(lines[1][0]), int(lines[1][1])
+with open(sys.argv[2], 'w') as f:
+    f.write('ply\nformat ascii 1.0\nelement vertex %d\nproperty float x\nproperty float y\nproperty float z\n'
+            'element face %d\nproperty list uchar int vertex_indices\nend_header\n' % (nv, nf))
+    for l in lines[2:2 + nv]: f.write(' '.join(l[:3]) + '\n')
+    for l in lines[2 + nv:2 + nv + nf]: f.write(' '.join(l[:4]) + '\n')
+PY
+  sum_ok=$(md5sum < clobber_ok/layout.ply)
+  "$CBD" layout -s "$MESHES/bull.off" --source-anchors "$EXAMPLES/bull_picked_points.pp" -t clobber_ok/layout.ply \
+    --target-anchors "$EXAMPLES/cow_picked_points.pp" -o clobber_ok >/dev/null 2>clobber8.err; rc8=$?
   want=$(code_of invalid_argument)
+  if [ "$rc7" = "$want" ] && grep -q "overwrite the input" clobber7.err && [ "$rc8" = 0 ] && \
+     [ -s clobber_ok/target/layout.ply ] && [ "$sum_ok" = "$(md5sum < clobber_ok/layout.ply)" ]; then
+    ok "an input through a symlink refused; an input beside a pair layout's folders accepted and unchanged"
+  else
+    bad "clobber through a symlink / beside a pair layout: exits $rc7 $rc8: $(cat clobber7.err clobber8.err)"
+  fi
   if [ "$rc5 $rc6" = "$want $want" ] && grep -q "overwrite the input" clobber5.err && grep -q "overwrite the input" clobber6.err; then
     ok "layouts onto their inputs refused (pair: OUT/target/paths.ply, single: OUT/clusters.ply)"
   else

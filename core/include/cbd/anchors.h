@@ -71,7 +71,8 @@ struct AnchorPairs {
 };
 
 /// Match two anchor sets by name. Errors: AnchorNameMismatch (a name on one side only, the
-/// first such name and the count in the message), DuplicateAnchorName.
+/// first such name and the count in the message), DuplicateAnchorName, TooFewAnchors (a set
+/// whose points are all inactive, `skippedInactive`, said as such).
 /// On success `sourceIndex[k]`/`targetIndex[k]` are the positions of pair k in each set.
 Status matchAnchors(const AnchorSet& source, const AnchorSet& target, std::vector<int>& sourceIndex,
                     std::vector<int>& targetIndex);

@@ -19,6 +19,8 @@ inline constexpr const char* kMstFile = "mst.ply";
 inline constexpr const char* kMtsFile = "mts.ply";
 inline constexpr const char* kCorrespondenceFile = "correspondence.txt";
 inline constexpr const char* kMorphPrefix = "morph_";
+/// The name of morph frame k: "morph_000.ply", ...
+std::string morphFileName(int k);
 
 /// The colour of a stretch value: blue (compressed, <= 1/2) - white (1) - red (stretched, >= 2),
 /// on a log scale; grey for NaN. Used for mst.ply and by the plugin.

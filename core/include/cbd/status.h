@@ -64,8 +64,8 @@ const char* errorCodeDescription(ErrorCode code);
 const ErrorCode* allErrorCodes(int& count);
 
 /// Why `path` cannot be read as an input file, with the fix, for FileNotFound messages: "no
-/// such file (check the path)", "is a folder, not a file (name a file in it)" or "is not a
-/// regular file (a device or pipe: give a file)".
+/// such file (check the path)", "cannot be accessed (...permissions...)", "is a folder, not a
+/// file (name a file in it)" or "is not a regular file (a device or pipe: give a file)".
 std::string notAFileReason(const std::string& path);
 
 /// Process exit code of the CLI for a code: 0 for Ok, 2 for invalid arguments,
