@@ -169,6 +169,25 @@ TEST(MapUntangle, IdentityIsLeftUnchanged) {
   for (int v = 0; v < m.vertexCount(); ++v) EXPECT_EQ(image[v], before[v]);
 }
 
+TEST(MapUntangle, ReportsTheDegenerateTrianglesOfTheMapItReturns) {
+  // Three anchors of one face, two of them mapped onto the same point: that triangle stays
+  // degenerate whatever moves (anchors never move), and the result counts it as the metrics do.
+  const IndexedMesh m = fx::icosphere(3);
+  std::vector<FacePoint> on;
+  std::vector<Vec3> image;
+  identityMap(m, on, image);
+  std::vector<char> fixed(m.vertexCount(), 0);
+  const auto& f = m.faces[0];
+  for (int v : f) fixed[v] = 1;
+  image[f[2]] = image[f[0]], on[f[2]] = on[f[0]];
+  const MapUntangleResult r = untangleCrossMap(m, m, fixed, on, image);
+  ASSERT_TRUE(r.status.ok()) << r.status.message;
+  const DistortionMetrics d = computeDistortion(m, image, m, on);
+  EXPECT_GE(d.degenerate, 1);
+  EXPECT_EQ(r.degenerateAfter, d.degenerate);
+  EXPECT_EQ(r.flippedAfter, d.flipped);
+}
+
 TEST(MapUntangle, IdentityOfASpikyMeshHasNoFlipWhateverFaceHoldsEachVertex) {
   // Sharp spikes: at a spike's tip the faces around it face far apart. Each vertex of the
   // identity map is located in the face around it that disagrees most with its neighbours, so

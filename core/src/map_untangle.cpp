@@ -1027,7 +1027,7 @@ MapUntangleResult untangleCrossMap(const IndexedMesh& S, const IndexedMesh& T, c
           bestLeft = left, bestRestartScore = score, best = t;
           onTarget = std::move(on), image = std::move(x);
         }
-        if (bestLeft < r.flippedAfter) r.moves += best.moves, r.degenerateAfter = best.degenerateAfter;
+        if (bestLeft < r.flippedAfter) r.moves += best.moves;
         r.flippedAfter = bestLeft;
       }
     };
@@ -1066,8 +1066,8 @@ MapUntangleResult untangleCrossMap(const IndexedMesh& S, const IndexedMesh& T, c
   r.flippedAfter = flips(onTarget, image);
   r.movedVertices = 0;
   for (size_t v = 0; v < image.size(); ++v) r.movedVertices += image[v] != startImage[v];
-  // Degenerate triangles of the map returned (area at most 1e-12 of the squared diagonal, as
-  // the metrics count them).
+  // Degenerate triangles of the map returned: area at most 1e-12 of the squared diagonal of
+  // the target's bounding box (the metrics take the images' box, which covers the same surface).
   r.degenerateAfter = 0;
   for (const auto& t : S.faces)
     r.degenerateAfter += 0.5 * (image[t[1]] - image[t[0]]).cross(image[t[2]] - image[t[0]]).norm() <= 1e-12 * diag2;
