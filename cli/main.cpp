@@ -40,7 +40,7 @@ int jsonStdout = -1;
 bool writeJson(const std::string& path, const json& j) {
   if (path.empty()) return true;
   if (path == "-") {
-    const std::string text = j.dump(2) + "\n";
+    const std::string text = j.dump(2, ' ', false, json::error_handler_t::replace) + "\n";
     if (jsonStdout < 0) {
       std::cout << text;
       return static_cast<bool>(std::cout.flush());
@@ -60,7 +60,7 @@ bool writeJson(const std::string& path, const json& j) {
   {
     std::ofstream out(tmp);
     if (!out) return false;
-    out << j.dump(2) << "\n";
+    out << j.dump(2, ' ', false, json::error_handler_t::replace) << "\n";
     if (!out.good()) return false;
   }
   std::error_code ec, ignored;
@@ -480,6 +480,9 @@ int runSample(const SampleArgs& a) {
                                          std::to_string(im.vertexCount() - 1) + ")"),
                   j, "");
   const std::vector<int> vs = cbd::farthestPointSampling(im, a.count, a.seed);
+  if (static_cast<int>(vs.size()) < a.count)
+    std::fprintf(stderr, "cbd: warning: '%s' has only %zu vertices on its surface: %zu anchors written, not %d\n",
+                 a.mesh.c_str(), vs.size(), vs.size(), a.count);
   std::vector<cbd::Anchor> anchors;
   for (size_t k = 0; k < vs.size(); ++k) {
     cbd::Anchor an;
@@ -637,6 +640,17 @@ int main(int argc, char** argv) {
     } else if (*cmdSample) {
       inputs = {sample.mesh};
       outputs = {sample.out};
+    }
+    // The JSON report onto one of the command's own files (it would replace M_st, say).
+    if (outputs.size() > 1 && !outputs[0].empty() && outputs[0] != "-") {
+      std::error_code ec;
+      const fs::path report = fs::weakly_canonical(outputs[0], ec);
+      for (size_t k = 1; k < outputs.size(); ++k)
+        if (report == fs::weakly_canonical(outputs[k], ec)) {
+          std::cerr << "cbd: error: invalid_argument: --json '" << outputs[0] << "' is one of the files the command "
+                    << "writes: choose another path for the report\n";
+          return cbd::exitCode(cbd::ErrorCode::InvalidArgument);
+        }
     }
     // An output that exists and is the same file as an input (through any path, symlink or
     // hard link) would replace it; one that does not exist cannot be an input.

@@ -221,6 +221,12 @@ TEST(Anchors, AllPointsInactiveIsNamedAsSuch) {
   EXPECT_NE(s.message.find("off.pp"), std::string::npos) << s.message;
   EXPECT_NE(s.message.find("inactive"), std::string::npos) << s.message;
   EXPECT_TRUE(si.empty() && ti.empty());
+  // No point at all (an empty file): too few anchors too, saying the file has none.
+  const AnchorSet none = parseAnchors("# only a comment\n", "none.txt");
+  ASSERT_TRUE(none.status.ok()) << none.status.message;
+  const Status e = matchAnchors(none, on, si, ti);
+  EXPECT_EQ(e.code, ErrorCode::TooFewAnchors);
+  EXPECT_NE(e.message.find("none.txt: no anchors"), std::string::npos) << e.message;
   // Some inactive: the mismatch names the missing anchor and says inactive points were left out.
   const AnchorSet some = parseAnchors(
       "<PickedPoints>\n<point x=\"1\" y=\"2\" z=\"3\" name=\"a\"/>\n"

@@ -323,7 +323,13 @@ Status matchAnchors(const AnchorSet& source, const AnchorSet& target, std::vecto
   targetIndex.clear();
   if (Status s = duplicateCheck(source); !s) return s;
   if (Status s = duplicateCheck(target); !s) return s;
-  // Every point unchecked in PickPoints: say so rather than that names do not match.
+  // No point at all, or every one unchecked in PickPoints: say so rather than that names do not
+  // match.
+  for (const AnchorSet* set : {&source, &target})
+    if (set->anchors.empty() && set->skippedInactive == 0)
+      return Status::error(ErrorCode::TooFewAnchors,
+                           set->source + ": no anchors in the file (no <point> element, or no data line); corresponding "
+                                         "anchors must be given on both meshes");
   for (const AnchorSet* set : {&source, &target})
     if (set->anchors.empty() && set->skippedInactive > 0)
       return Status::error(ErrorCode::TooFewAnchors,

@@ -62,7 +62,7 @@ const char* errorCodeDescription(ErrorCode code) {
     case ErrorCode::AnchorIndexOutOfRange: return "a vertex index is outside the mesh";
     case ErrorCode::AnchorOffSurface: return "an anchor lies farther from the mesh than the snap tolerance";
     case ErrorCode::AnchorsShareVertex: return "two anchors snap to the same vertex";
-    case ErrorCode::TooFewAnchors: return "fewer than three anchors (or too few for the surface's genus)";
+    case ErrorCode::TooFewAnchors: return "fewer than three anchors (or none active)";
     case ErrorCode::TooManyAnchors: return "more anchors than the smaller mesh has vertices";
     case ErrorCode::LayoutFailed: return "a common base domain could not be completed";
     case ErrorCode::InternalError: return "a broken invariant: a bug, please report it";

@@ -173,6 +173,12 @@ python3 -c "import json,sys; w=json.load(open('long_off.json'))['source']['warni
 # A folder as mesh, and a .pp whose points are all unchecked, are named as such.
 expect folder_mesh          file_not_found       -- --source . --target octa.off "${P[@]}"
 grep -q "is a folder" folder_mesh.err || bad "folder as mesh: $(cat folder_mesh.err)"
+# An empty anchor file: no anchors, not a name mismatch.
+: > empty_anchors.txt
+expect empty_anchors        too_few_anchors      -- --source octa.off --target octa.off --source-anchors empty_anchors.txt --target-anchors octa.txt
+# Names that are not UTF-8 (Latin-1 bytes): the JSON report is still written and valid.
+sed 's/^xp /xp\xe9 /' octa.txt > latin1.txt
+expect latin1_names         ok                   -- --source octa.off --target octa.off --source-anchors latin1.txt --target-anchors latin1.txt
 # A named pipe as anchors: refused at once (opening it would wait for a writer).
 rm -f pipe.pp; mkfifo pipe.pp
 timeout 20 "$CBD" check --source octa.off --target octa.off --source-anchors pipe.pp --target-anchors octa.txt >/dev/null 2>pipe.err; rc=$?
@@ -349,6 +355,17 @@ PY
     --target-anchors "$EXAMPLES/cow_picked_points.pp" -o clobber_out >/dev/null 2>clobber3.err; rc3=$?
   "$CBD" check -s "$MESHES/cow.off" -t "$MESHES/bull.off" --source-anchors "$EXAMPLES/cow_picked_points.pp" \
     --target-anchors "$EXAMPLES/bull_picked_points.pp" --json jsondir >/dev/null 2>clobber4.err; rc4=$?
+  # The report onto one of the command's own outputs: refused before any work.
+  "$CBD" map --source "$MESHES/bull.off" --source-anchors "$EXAMPLES/bull_picked_points.pp" \
+    --target "$MESHES/cow.off" --target-anchors "$EXAMPLES/cow_picked_points.pp" -o json_out --json json_out/mst.ply \
+    >/dev/null 2>json_self.err; rc=$?
+  [ "$rc" = 2 ] && grep -q "is one of the files the command writes" json_self.err && [ ! -e json_out/mst.ply ] &&
+    ok "--json onto the command's own mst.ply refused: $(cat json_self.err)" || bad "--json onto mst.ply: exit $rc, $(cat json_self.err)"
+  # More anchors asked of sample-anchors than the mesh has vertices: all of them, with a warning.
+  "$CBD" sample-anchors -m "$MESHES/cow.off" -n 3000 -o all_cow.pp >/dev/null 2>all_cow.err; rc=$?
+  n=$(grep -c '<point ' all_cow.pp 2>/dev/null)
+  [ "$rc" = 0 ] && [ "$n" = 2904 ] && grep -q "2904 anchors written, not 3000" all_cow.err &&
+    ok "sample-anchors -n 3000 on cow: $n points, $(cat all_cow.err)" || bad "sample-anchors -n 3000: exit $rc, $n points, $(cat all_cow.err)"
   # A pair layout writes OUT/source/ and OUT/target/, a single-surface layout OUT itself.
   mkdir -p clobber_lay/target; cp "$MESHES/cow.off" clobber_lay/target/paths.ply; cp "$MESHES/cow.off" clobber_lay/clusters.ply
   sums="$sums $(md5sum clobber_lay/target/paths.ply clobber_lay/clusters.ply)"

@@ -36,7 +36,7 @@ enum class ErrorCode {
   AnchorIndexOutOfRange, ///< a vertex index is outside the mesh
   AnchorOffSurface,      ///< an anchor lies farther from the mesh than the snap tolerance
   AnchorsShareVertex,    ///< two anchors snap to the same vertex
-  TooFewAnchors,         ///< fewer than three anchors (or too few for the surface's genus)
+  TooFewAnchors,         ///< fewer than three anchors (or none active)
   TooManyAnchors,        ///< more anchors than the smaller mesh has vertices
   // algorithm
   LayoutFailed,          ///< a common base domain could not be completed
