@@ -278,7 +278,7 @@ int runSingleLayout(const RunArgs& a) {
   if (!lr.status) return finish(lr.status, j, a.jsonPath);
   const cbd::IndexedMesh source = cbd::toIndexed(mesh);
   cbd::MeshReport rep = cbd::validateMesh(source, "source", lr.hadPolygons);
-  for (const std::string& w : lr.warnings) rep.warnings.push_back("'" + a.mesh + "': " + w);
+  rep.warnings.insert(rep.warnings.end(), lr.warnings.begin(), lr.warnings.end());
   j["source"] = meshJson(rep);
   if (!rep.status) {
     rep.status.message = "source mesh '" + a.mesh + "'" + rep.status.message.substr(std::string("source mesh").size());

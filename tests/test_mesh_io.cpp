@@ -186,6 +186,10 @@ TEST(MeshIO, Errors) {
   ASSERT_EQ(longOff.warnings.size(), 1u);
   EXPECT_NE(longOff.warnings[0].find("1 line after the header's 4 vertices and 3 faces"), std::string::npos)
       << longOff.warnings[0];
+  // The warning names the file, once (callers pass it on as it is).
+  const std::string named = "'" + d.file("long.off") + "': ";
+  EXPECT_EQ(longOff.warnings[0].rfind(named, 0), 0u) << longOff.warnings[0];
+  EXPECT_EQ(longOff.warnings[0].find(named, 1), std::string::npos) << longOff.warnings[0];
   EXPECT_TRUE(loadMesh(d.file("missing.off"), m).warnings.empty());
   // A folder or a device is named as such.
   const Status folder = loadMesh(d.path.string(), m).status;

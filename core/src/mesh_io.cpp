@@ -400,6 +400,7 @@ LoadResult loadMeshUnchecked(const std::string& path, Mesh& mesh) {
     if (err != 0 && io::ImporterPLY<Mesh>::ErrorCritical(err)) what = io::ImporterPLY<Mesh>::ErrorMsg(err);
   } else if (ext == ".off") {
     what = readOff(path, mesh, mask, r.warnings);
+    for (std::string& w : r.warnings) w = "'" + path + "': " + w;
   } else if (ext == ".obj") {
     // vcglib 2020.09's ImporterOBJ drops every face that uses the file's first vertex
     // (SplitToken makes indices 0-based, then GoodObjIndex rejects index 0), so OBJ is read here.

@@ -340,10 +340,10 @@ void loadAndValidate(const InputFiles& files, const ValidationOptions& options, 
   };
   rename(out.report.source, files.sourceMesh);
   rename(out.report.target, files.targetMesh);
-  // The loaders' warnings, with the file named.
-  for (const auto& [load, m, path] : {std::tuple{&out.sourceLoad, &out.report.source, &files.sourceMesh},
-                                      std::tuple{&out.targetLoad, &out.report.target, &files.targetMesh}})
-    for (const std::string& w : load->warnings) m->warnings.push_back("'" + *path + "': " + w);
+  // The loaders' warnings (they name the file).
+  for (const auto& [load, m] : {std::pair{&out.sourceLoad, &out.report.source},
+                                std::pair{&out.targetLoad, &out.report.target}})
+    m->warnings.insert(m->warnings.end(), load->warnings.begin(), load->warnings.end());
   if (!out.report.source.status) out.report.status = out.report.source.status;
   else if (!out.report.target.status) out.report.status = out.report.target.status;
 }

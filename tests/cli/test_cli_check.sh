@@ -166,8 +166,14 @@ expect too_many             too_many_anchors     -- --source octa.off --target o
 # An OFF file with a face more than its header counts is read as counted, with a warning.
 { cat octa.off; echo "3 0 2 4"; } > long.off
 expect long_off             ok                   -- --source long.off --target octa.off "${P[@]}"
-grep -q "long.off': 1 line after the header's 6 vertices and 8 faces were not read" long_off.out ||
+grep -q "warning: 'long.off': 1 line after the header's 6 vertices and 8 faces were not read" long_off.out ||
   bad "long OFF: no warning in $(cat long_off.out)"
+grep -q "'long.off': 'long.off'" long_off.out && bad "long OFF: the file is named twice in $(cat long_off.out)"
+# The single-surface layout passes the same warning on, naming the file once.
+"$CBD" layout --source long.off --source-anchors octa.txt -o long_layout >/dev/null 2>long_layout.err; rc=$?
+[ "$rc" = 0 ] && grep -q "cbd: warning: 'long.off': 1 line after" long_layout.err &&
+  ! grep -q "'long.off': 'long.off'" long_layout.err &&
+  ok "long OFF in a single layout: $(head -1 long_layout.err)" || bad "long OFF in a single layout: exit $rc, $(cat long_layout.err)"
 python3 -c "import json,sys; w=json.load(open('long_off.json'))['source']['warnings']; sys.exit(not (len(w) == 1 and 'not read' in w[0]))" ||
   bad "long OFF: no warning in the JSON: $(cat long_off.json)"
 # A folder as mesh, and a .pp whose points are all unchecked, are named as such.

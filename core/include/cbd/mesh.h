@@ -56,7 +56,7 @@ struct LoadResult {
   bool hasVertexQuality = false;
   bool hasVertexTexCoord = false;
   /// What was read but may not be what the file meant (e.g. lines after an OFF file's last
-  /// counted face, left unread); the mesh is usable.
+  /// counted face, left unread); the mesh is usable. Each names the file: "'<path>': ...".
   std::vector<std::string> warnings;
 };
 
