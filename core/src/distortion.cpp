@@ -50,7 +50,7 @@ DistortionMetrics computeDistortion(const IndexedMesh& S, const std::vector<Vec3
     const double As = 0.5 * (s1 - s0).cross(s2 - s0).norm();
     const Vec3 ni = (i1 - i0).cross(i2 - i0);
     const double At = 0.5 * ni.norm();
-    if (At <= 1e-12 * diag2) {
+    if (degenerateImageArea(At, diag2)) {
       ++d.degenerate;
       continue;
     }

@@ -6,6 +6,8 @@
 #include <cstdint>
 #include <unordered_map>
 
+#include "cbd/distortion.h"
+
 namespace cbd {
 
 std::vector<Vec3> faceNormals(const IndexedMesh& m) {
@@ -323,7 +325,7 @@ MapUntangleResult untangleOnce(const IndexedMesh& S, const IndexedMesh& T, const
     }
     FaceEval e;
     const Vec3 c = (p[1] - p[0]).cross(p[2] - p[0]);
-    if (0.5 * c.norm() <= 1e-12 * diag2) {  // degenerate, as the metrics count it
+    if (degenerateImageArea(0.5 * c.norm(), diag2)) {  // as the metrics count it
       e.bad = e.degenerate = true;
       e.cost = 1e9;
       return e;
@@ -691,7 +693,7 @@ int polishMap(const IndexedMesh& S, const IndexedMesh& T, const SurfaceWalker& w
     e.at = 0.5 * c.norm();
     double frob = 0;
     const double a = angleDistortion(S.positions[t[0]], S.positions[t[1]], S.positions[t[2]], p[0], p[1], p[2], &frob);
-    e.bad = e.at <= 1e-12 * diag2 || frob >= 1e12 ||
+    e.bad = degenerateImageArea(e.at, diag2) || frob >= 1e12 ||
             imageFlipped(p[0], p[1], p[2], normal, on[0]->face, on[1]->face, on[2]->face);
     e.flipped = e.bad && targetNormals.flipped(p[0], p[1], p[2], *on[0], *on[1], *on[2]);
     e.l2 = e.at * 0.5 * frob;
@@ -701,7 +703,7 @@ int polishMap(const IndexedMesh& S, const IndexedMesh& T, const SurfaceWalker& w
   double sumAt = 0, sumL2 = 0, sumAng = 0;
   for (int f = 0; f < nf; ++f) {
     const Terms e = terms(f, -1, Vec3::Zero(), nullptr);
-    if (e.bad && e.at <= 1e-12 * diag2) continue;
+    if (e.bad && degenerateImageArea(e.at, diag2)) continue;
     sumAt += e.at, sumL2 += e.l2, sumAng += e.ang;
   }
   if (!(sumAt > 0)) return 0;
@@ -739,7 +741,7 @@ int polishMap(const IndexedMesh& S, const IndexedMesh& T, const SurfaceWalker& w
       bool degenerate = false;
       for (int f : facesOf[v]) {
         cur.push_back(terms(f, -1, Vec3::Zero(), nullptr));
-        degenerate |= cur.back().at <= 1e-12 * diag2 || cur.back().l2 >= 1e11;
+        degenerate |= degenerateImageArea(cur.back().at, diag2) || cur.back().l2 >= 1e11;
         at0 += cur.back().at, l20 += cur.back().l2, ang0 += cur.back().ang;
       }
       if (degenerate) continue;
@@ -940,10 +942,15 @@ MapUntangleResult untangleCrossMap(const IndexedMesh& S, const IndexedMesh& T, c
                                    const MapUntangleOptions& options) {
   const TargetNormals normals(T);
   const double diag2 = boxDiagonal2(T.positions);
+  // Degenerate image triangles as the metrics count them (the metrics take the images' box,
+  // which covers the same surface as the target's).
+  auto degenerate = [&](const std::array<int, 3>& t, const std::vector<Vec3>& x) {
+    return degenerateImageArea(0.5 * (x[t[1]] - x[t[0]]).cross(x[t[2]] - x[t[0]]).norm(), diag2);
+  };
   // Flipped triangles as the metrics count them (degenerate ones apart).
   auto flippedFace = [&](const std::array<int, 3>& t, const std::vector<FacePoint>& on, const std::vector<Vec3>& x) {
     if (on[t[0]].face < 0 || on[t[1]].face < 0 || on[t[2]].face < 0) return false;
-    if (0.5 * (x[t[1]] - x[t[0]]).cross(x[t[2]] - x[t[0]]).norm() <= 1e-12 * diag2) return false;
+    if (degenerate(t, x)) return false;
     return normals.flipped(x[t[0]], x[t[1]], x[t[2]], on[t[0]], on[t[1]], on[t[2]]);
   };
   auto flips = [&](const std::vector<FacePoint>& on, const std::vector<Vec3>& x) {
@@ -1066,11 +1073,9 @@ MapUntangleResult untangleCrossMap(const IndexedMesh& S, const IndexedMesh& T, c
   r.flippedAfter = flips(onTarget, image);
   r.movedVertices = 0;
   for (size_t v = 0; v < image.size(); ++v) r.movedVertices += image[v] != startImage[v];
-  // Degenerate triangles of the map returned: area at most 1e-12 of the squared diagonal of
-  // the target's bounding box (the metrics take the images' box, which covers the same surface).
+  // Degenerate triangles of the map returned.
   r.degenerateAfter = 0;
-  for (const auto& t : S.faces)
-    r.degenerateAfter += 0.5 * (image[t[1]] - image[t[0]]).cross(image[t[2]] - image[t[0]]).norm() <= 1e-12 * diag2;
+  for (const auto& t : S.faces) r.degenerateAfter += degenerate(t, image);
   return r;
 }
 

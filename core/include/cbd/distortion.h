@@ -12,6 +12,11 @@
 
 namespace cbd {
 
+/// An image triangle of area `area` is degenerate when the area is at most 1e-12 of `diag2`,
+/// the squared diagonal of the images' bounding box: the metrics leave it out and count it,
+/// and the untangling and polish use the same test, so what they report is what the metrics count.
+inline bool degenerateImageArea(double area, double diag2) { return area <= 1e-12 * diag2; }
+
 /// Result of `computeDistortion`. Every mean is over the source's (non-degenerate) triangles.
 struct DistortionMetrics {
   Status status;
@@ -24,7 +29,7 @@ struct DistortionMetrics {
   double eAng = 0.0;
   double eAngDegrees = 0.0;  ///< source-area-weighted mean |corner angle difference|, degrees
   int flipped = 0;           ///< image normal opposite to the target surface normal there
-  int degenerate = 0;        ///< image area below 1e-12 of the squared bbox diagonal
+  int degenerate = 0;        ///< image triangles with degenerateImageArea
   std::vector<double> faceStretch;  ///< per source face: sqrt((s1^2+s2^2)/2) scaled so 1 is no stretch
   /// Per source face, its share of the means above: A_s ((s1/s2 + s2/s1)/2 - 1) / sum A_s, which
   /// sum to `eAng`, and A_t (s1^2+s2^2)/2 sum A_s / (sum A_t)^2, which sum to eL2^2 (0 for a
