@@ -194,21 +194,17 @@ AnchorSet parseAnchors(const std::string& text, const std::string& label) {
 
 AnchorSet readAnchors(const std::string& path) {
   // Checked before opening: opening a named pipe would wait for a writer.
+  auto notFound = [&path](const std::string& message) {
+    AnchorSet set;
+    set.source = path;
+    set.status = Status::error(ErrorCode::FileNotFound, message);
+    return set;
+  };
   std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec)) {
-    AnchorSet set;
-    set.source = path;
-    set.status = Status::error(ErrorCode::FileNotFound, "cannot read anchor file '" + path + "': " + notAFileReason(path));
-    return set;
-  }
+  if (!std::filesystem::is_regular_file(path, ec))
+    return notFound("cannot read anchor file '" + path + "': " + notAFileReason(path));
   std::ifstream in(path, std::ios::binary);
-  if (!in) {
-    AnchorSet set;
-    set.source = path;
-    set.status = Status::error(ErrorCode::FileNotFound,
-                               "cannot open anchor file '" + path + "' for reading (check permissions)");
-    return set;
-  }
+  if (!in) return notFound("cannot open anchor file '" + path + "' for reading (check permissions)");
   std::ostringstream ss;
   ss << in.rdbuf();
   return parseAnchors(ss.str(), path);
@@ -325,17 +321,17 @@ Status matchAnchors(const AnchorSet& source, const AnchorSet& target, std::vecto
   if (Status s = duplicateCheck(target); !s) return s;
   // No point at all, or every one unchecked in PickPoints: say so rather than that names do not
   // match.
-  for (const AnchorSet* set : {&source, &target})
-    if (set->anchors.empty() && set->skippedInactive == 0)
+  for (const AnchorSet* set : {&source, &target}) {
+    if (!set->anchors.empty()) continue;
+    if (set->skippedInactive == 0)
       return Status::error(ErrorCode::TooFewAnchors,
                            set->source + ": no anchors in the file (no <point> element, or no data line); corresponding "
                                          "anchors must be given on both meshes");
-  for (const AnchorSet* set : {&source, &target})
-    if (set->anchors.empty() && set->skippedInactive > 0)
-      return Status::error(ErrorCode::TooFewAnchors,
-                           set->source + ": all " + std::to_string(set->skippedInactive) +
-                               " points are inactive (active=\"0\", unchecked in MeshLab's PickPoints); check the "
-                               "points to use as anchors (and save the .pp file again, if the points come from one)");
+    return Status::error(ErrorCode::TooFewAnchors,
+                         set->source + ": all " + std::to_string(set->skippedInactive) +
+                             " points are inactive (active=\"0\", unchecked in MeshLab's PickPoints); check the "
+                             "points to use as anchors (and save the .pp file again, if the points come from one)");
+  }
   std::unordered_map<std::string, int> inTarget;
   for (size_t i = 0; i < target.anchors.size(); ++i) inTarget.emplace(target.anchors[i].name, static_cast<int>(i));
   std::vector<std::string> onlySource, onlyTarget;
