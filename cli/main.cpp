@@ -344,8 +344,8 @@ int runLayout(const RunArgs& a) {
   j["timing_s"] = timesJson(p.times);
   if (!p.status) return finish(p.status, j, a.jsonPath);
   j["layout"] = layoutJson(p);
-  if (cbd::Status s = cbd::writeLayout(p.source, a.out + "/source"); !s) return finish(s, j, a.jsonPath);
-  if (cbd::Status s = cbd::writeLayout(p.target, a.out + "/target"); !s) return finish(s, j, a.jsonPath);
+  if (cbd::Status s = cbd::writeLayout(p.source, a.out + "/" + cbd::kSourceLayoutFolder); !s) return finish(s, j, a.jsonPath);
+  if (cbd::Status s = cbd::writeLayout(p.target, a.out + "/" + cbd::kTargetLayoutFolder); !s) return finish(s, j, a.jsonPath);
   printLayout(p);
   std::printf("time    voronoi %.3f s, source layout %.3f s, target layout %.3f s\n", p.times.voronoi,
               p.times.sourceLayout, p.times.targetLayout);
@@ -423,8 +423,8 @@ int runMap(const RunArgs& a) {
   if (cbd::Status s = cbd::savePly(dir + "/" + cbd::kMtsFile, mts, po); !s) return finish(s, j, a.jsonPath);
   if (cbd::Status s = cbd::writeCorrespondence(dir + "/" + cbd::kCorrespondenceFile, r.map.sourceToTarget, r.map.sourceImage); !s)
     return finish(s, j, a.jsonPath);
-  if (cbd::Status s = cbd::writeLayout(r.layouts.source, dir + "/source"); !s) return finish(s, j, a.jsonPath);
-  if (cbd::Status s = cbd::writeLayout(r.layouts.target, dir + "/target"); !s) return finish(s, j, a.jsonPath);
+  if (cbd::Status s = cbd::writeLayout(r.layouts.source, dir + "/" + cbd::kSourceLayoutFolder); !s) return finish(s, j, a.jsonPath);
+  if (cbd::Status s = cbd::writeLayout(r.layouts.target, dir + "/" + cbd::kTargetLayoutFolder); !s) return finish(s, j, a.jsonPath);
   if (a.morph > 0)
     if (cbd::Status s = cbd::writeMorph(dir, in.sourceMesh, r.map.sourceImage, sa, a.morph); !s) return finish(s, j, a.jsonPath);
   printLayout(r.layouts);
@@ -629,8 +629,10 @@ int main(int argc, char** argv) {
       // (in it for a single surface, else in source/ and target/), and for `map` M_st, M_ts,
       // the correspondence and the morph frames.
       const fs::path out(r.out);
-      const std::vector<fs::path> dirs =
-          *cmdLayout && r.target.empty() ? std::vector<fs::path>{out} : std::vector<fs::path>{out / "source", out / "target"};
+      const std::vector<fs::path> dirs = *cmdLayout && r.target.empty()
+                                             ? std::vector<fs::path>{out}
+                                             : std::vector<fs::path>{out / cbd::kSourceLayoutFolder,
+                                                                     out / cbd::kTargetLayoutFolder};
       for (const fs::path& d : dirs)
         for (const char* name : {cbd::kLayoutFile, cbd::kPathsFile, cbd::kClustersFile}) outputs.push_back((d / name).string());
       if (*cmdMap) {
@@ -643,10 +645,11 @@ int main(int argc, char** argv) {
     }
     // The JSON report onto one of the command's own files (it would replace M_st, say).
     if (outputs.size() > 1 && !outputs[0].empty() && outputs[0] != "-") {
-      std::error_code ec;
-      const fs::path report = fs::weakly_canonical(outputs[0], ec);
-      for (size_t k = 1; k < outputs.size(); ++k)
-        if (report == fs::weakly_canonical(outputs[k], ec)) {
+      // Compared only where both paths resolve (a failure gives an empty path for each).
+      std::error_code reportError;
+      const fs::path report = fs::weakly_canonical(outputs[0], reportError);
+      for (size_t k = 1; k < outputs.size() && !reportError; ++k)
+        if (std::error_code ec; report == fs::weakly_canonical(outputs[k], ec) && !ec) {
           std::cerr << "cbd: error: invalid_argument: --json '" << outputs[0] << "' is one of the files the command "
                     << "writes: choose another path for the report\n";
           return cbd::exitCode(cbd::ErrorCode::InvalidArgument);

@@ -15,6 +15,9 @@ namespace cbd {
 inline constexpr const char* kLayoutFile = "layout.ply";
 inline constexpr const char* kPathsFile = "paths.ply";
 inline constexpr const char* kClustersFile = "clusters.ply";
+/// The subfolders a pair's two layouts are written into (by `cbd layout` and `cbd map`).
+inline constexpr const char* kSourceLayoutFolder = "source";
+inline constexpr const char* kTargetLayoutFolder = "target";
 
 /// A well-separated colour for index k (golden-ratio hues), as 8-bit RGB.
 std::array<unsigned char, 3> paletteColor(int k);
