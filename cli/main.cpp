@@ -185,8 +185,10 @@ double elapsed(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
-cbd::CrossParameterizationOptions pipelineOptions(const RunArgs& a) {
+/// The pipeline's options from the command line; `names`: the anchors' names, for messages.
+cbd::CrossParameterizationOptions pipelineOptions(const RunArgs& a, const std::vector<std::string>& names = {}) {
   cbd::CrossParameterizationOptions o;
+  o.anchorNames = names;
   o.method = a.method == "greedy" ? cbd::LayoutMethod::Greedy : cbd::LayoutMethod::Voronoi;
   o.edgeNodes.minEdgeNodes = a.singleEdgeNode ? 1 : a.minEdgeNodes;
   o.edgeNodes.adaptive = !a.singleEdgeNode;
@@ -299,8 +301,8 @@ int runSingleLayout(const RunArgs& a) {
                                          "; a layout needs at least 3"),
                   j, a.jsonPath);
   std::vector<int> anchors;
-  for (const auto& s : snapped) anchors.push_back(s.vertex);
   cbd::SourceLayoutOptions opt;
+  for (const auto& s : snapped) anchors.push_back(s.vertex), opt.anchorNames.push_back(s.name);
   opt.edgeNodes = pipelineOptions(a).edgeNodes;
   const cbd::SourceLayoutResult r = cbd::buildSourceLayout(source, anchors, opt);
   j["timing_s"] = {{"voronoi", r.voronoiSeconds}, {"source_layout", r.layoutSeconds}};
@@ -339,7 +341,8 @@ int runLayout(const RunArgs& a) {
   cbd::LoadedInput in;
   std::vector<int> sa, ta;
   if (cbd::Status s = loadPair(a, in, sa, ta, j); !s) return finish(s, j, a.jsonPath);
-  cbd::LayoutPair p = cbd::buildLayouts(in.source, sa, in.target, ta, in.report.source.eulerCharacteristic, pipelineOptions(a));
+  cbd::LayoutPair p = cbd::buildLayouts(in.source, sa, in.target, ta, in.report.source.eulerCharacteristic,
+                                         pipelineOptions(a, in.report.anchors.names));
   p.times.total = elapsed(t0);
   j["timing_s"] = timesJson(p.times);
   if (!p.status) return finish(p.status, j, a.jsonPath);
@@ -367,7 +370,8 @@ int runMap(const RunArgs& a) {
     return finish(cbd::Status::error(cbd::ErrorCode::OutputError, "cannot create output folder '" + a.out + "'"), j,
                   a.jsonPath);
   cbd::CrossParameterizationResult r =
-      cbd::crossParameterize(in.source, sa, in.target, ta, in.report.source.eulerCharacteristic, pipelineOptions(a));
+      cbd::crossParameterize(in.source, sa, in.target, ta, in.report.source.eulerCharacteristic,
+                             pipelineOptions(a, in.report.anchors.names));
   r.times.total = elapsed(t0);
   j["timing_s"] = timesJson(r.times);
   if (!r.status) return finish(r.status, j, a.jsonPath);

@@ -57,8 +57,10 @@ QString stem(const MeshModel& m) {
 }
 
 /// `forMap`: the Cross-parameterize filter (smoothing and straightening apply); else the layout filter.
-cbd::CrossParameterizationOptions coreOptions(const PipelineOptions& o, bool forMap) {
+cbd::CrossParameterizationOptions coreOptions(const PipelineOptions& o, bool forMap,
+                                              const std::vector<std::string>& anchorNames) {
   cbd::CrossParameterizationOptions c;
+  c.anchorNames = anchorNames;
   c.method = o.method == LayoutMethod::GreedyShortestPaths ? cbd::LayoutMethod::Greedy : cbd::LayoutMethod::Voronoi;
   c.edgeNodes.minEdgeNodes = o.minEdgeNodes;
   c.edgeNodes.adaptive = o.adaptiveEdgeNodes;
@@ -236,7 +238,8 @@ cbd::Status runPipeline(const PipelineRequest& rq, vcg::CallBackPos* cb) {
   if (rq.filter == FilterKind::VoronoiBaseDomain) {
     progress(25, "cbd: building the common base domain");
     const auto t0 = std::chrono::steady_clock::now();
-    cbd::LayoutPair p = cbd::buildLayouts(rq.source, sa, rq.target, ta, euler, coreOptions(o, false));
+    cbd::LayoutPair p =
+        cbd::buildLayouts(rq.source, sa, rq.target, ta, euler, coreOptions(o, false, rq.report.anchors.names));
     p.times.total = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     if (!p.status.ok()) return cbd::Status::error(p.status.code, failure(tag, p.status));
     progress(80, "cbd: layouts built");
@@ -275,7 +278,8 @@ cbd::Status runPipeline(const PipelineRequest& rq, vcg::CallBackPos* cb) {
 
   // Cross-parameterize.
   progress(25, "cbd: building the common base domain and the cross-parameterization");
-  cbd::CrossParameterizationResult r = cbd::crossParameterize(rq.source, sa, rq.target, ta, euler, coreOptions(o, true));
+  cbd::CrossParameterizationResult r =
+      cbd::crossParameterize(rq.source, sa, rq.target, ta, euler, coreOptions(o, true, rq.report.anchors.names));
   if (!r.status.ok()) return cbd::Status::error(r.status.code, failure(tag, r.status));
   progress(80, "cbd: cross-parameterization done");
 

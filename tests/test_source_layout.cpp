@@ -192,11 +192,24 @@ TEST(SourceLayout, ALinkAlongASideOfAHandleRegionIsTakenBackNotRetracedForever) 
   {
     // 4 random anchors: a region left with a handle and three corners, all adjacent, has no
     // link that is not taken back, and the layout fails (it ran out of memory before).
-    const SourceLayoutResult r = buildSourceLayout(pair.source, stress::randomAnchors(pair.source, 4, 100314, false));
+    const std::vector<int> anchors = stress::randomAnchors(pair.source, 4, 100314, false);
+    const SourceLayoutResult r = buildSourceLayout(pair.source, anchors);
     EXPECT_EQ(r.status.code, ErrorCode::LayoutFailed);
     EXPECT_NE(r.status.message.find("no path can split"), std::string::npos) << r.status.message;
     EXPECT_GE(r.rejectedPaths, 1);
     EXPECT_LT(r.layout.mesh.faceCount(), 3 * inputFaces);
+    // Given the anchors' names, the message names the region's corners by them: the same
+    // message but for each " k" corner written " 'name k'".
+    SourceLayoutOptions named;
+    named.anchorNames = {"nose", "tail", "left ear", "right ear"};
+    const SourceLayoutResult n = buildSourceLayout(pair.source, anchors, named);
+    ASSERT_EQ(n.status.code, ErrorCode::LayoutFailed);
+    EXPECT_NE(n.status.message.find("corners '"), std::string::npos) << n.status.message;
+    std::string unnamed = n.status.message;
+    for (int k = 0; k < 4; ++k)
+      for (size_t at; (at = unnamed.find(" '" + named.anchorNames[k] + "'")) != std::string::npos;)
+        unnamed.replace(at, named.anchorNames[k].size() + 3, " " + std::to_string(k));
+    EXPECT_EQ(unnamed, r.status.message);
   }
 }
 

@@ -257,13 +257,15 @@ GreedyLayoutResult buildGreedyLayout(const IndexedMesh& S, const std::vector<int
     auto describe = [&] {
       std::string s = "region of " + std::to_string(rs.faces) + " faces with corners";
       for (const auto& l : rs.loops)
-        for (int c : l.corners) s += " " + std::to_string(c);
+        for (int c : l.corners) s += " " + anchorLabel(options.anchorNames, c);
       s += " and " + std::to_string(rs.interiorAnchors.size()) + " anchors inside";
       return s;
     };
     if (badT < 0 || guard > 4 * na + 64) {
       r.status = Status::error(ErrorCode::LayoutFailed,
-                               "greedy layout (Kraevoy & Sheffer): the " + describe() + " has no consistent counterpart");
+                               "greedy layout (Kraevoy & Sheffer): the " + describe() +
+                                   " has no consistent counterpart on the target; check that the anchors there "
+                                   "correspond, add anchors in that region, or use the Voronoi method");
       return r;
     }
     // Candidate links by source length inside the region.
@@ -336,7 +338,9 @@ GreedyLayoutResult buildGreedyLayout(const IndexedMesh& S, const std::vector<int
     if (!done) {
       r.status = Status::error(ErrorCode::LayoutFailed,
                                "greedy layout (Kraevoy & Sheffer): the " + describe() +
-                                   " cannot be triangulated without linking an anchor pair twice");
+                                   " cannot be triangulated without linking an anchor pair twice (which the "
+                                   "method never does); add anchors in that region, or use the Voronoi method, "
+                                   "which links a pair through several cuts");
       return r;
     }
     updateRegion(ms, ss.layout.mesh, ss.tracer.edgePath(), ss.anchorMap(), bad, scratch[0]);

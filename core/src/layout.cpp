@@ -8,6 +8,11 @@
 
 namespace cbd {
 
+std::string anchorLabel(const std::vector<std::string>& names, int k) {
+  if (k >= 0 && k < static_cast<int>(names.size())) return "'" + names[k] + "'";
+  return std::to_string(k);
+}
+
 int Layout::multipleLinkages() const {
   std::map<std::pair<int, int>, int> count;
   for (const LayoutEdge& e : edges) ++count[std::minmax(e.a, e.b)];

@@ -37,6 +37,7 @@ LayoutPair voronoiLayouts(const IndexedMesh& from, const std::vector<int>& fa, c
   p.method = LayoutMethod::Voronoi;
   SourceLayoutOptions so;
   so.edgeNodes = options.edgeNodes;
+  so.anchorNames = options.anchorNames;
   p.sourceStats = buildSourceLayout(from, fa, so);
   p.times.voronoi = p.sourceStats.voronoiSeconds;
   p.times.sourceLayout = p.sourceStats.layoutSeconds;
@@ -50,6 +51,7 @@ LayoutPair voronoiLayouts(const IndexedMesh& from, const std::vector<int>& fa, c
   }
   TargetLayoutOptions to;
   to.edgeNodes = options.edgeNodes;
+  to.anchorNames = options.anchorNames;
   p.targetStats = buildTargetLayout(p.sourceStats.layout, onto, ta, to);
   p.times.voronoi += p.targetStats.voronoiSeconds;
   p.times.targetLayout = p.targetStats.layoutSeconds;
@@ -69,6 +71,7 @@ LayoutPair buildLayouts(const IndexedMesh& source, const std::vector<int>& sa, c
   if (options.method == LayoutMethod::Greedy) {
     GreedyLayoutOptions g;
     g.edgeNodes = options.edgeNodes;
+    g.anchorNames = options.anchorNames;
     p.greedyStats = buildGreedyLayout(source, sa, target, ta, g);
     p.times.sourceLayout = p.greedyStats.candidateSeconds + p.greedyStats.layoutSeconds;
     if (!p.greedyStats.status) return p.status = p.greedyStats.status, p;

@@ -143,7 +143,7 @@ SourceLayoutResult buildSourceLayout(const IndexedMesh& input, const std::vector
       std::string s = "region " + std::to_string(bad) + " (" + std::to_string(reg.faces) + " faces, " +
                       std::to_string(reg.loops.size()) + " boundary loops, corners";
       for (const auto& l : reg.loops)
-        for (int c : l.corners) s += " " + std::to_string(c);
+        for (int c : l.corners) s += " " + anchorLabel(options.anchorNames, c);
       s += ", " + std::to_string(reg.interiorAnchors.size()) + " anchors inside)";
       return s;
     };

@@ -341,7 +341,8 @@ TargetLayoutResult buildTargetLayout(const Layout& src, const IndexedMesh& targe
       const LayoutEdge& se = src.edges[pending.front()];
       r.status = Status::error(ErrorCode::LayoutFailed,
                                "the target layout cannot be completed: edge " + std::to_string(pending.front()) +
-                                   " between anchors " + std::to_string(se.a) + " and " + std::to_string(se.b) +
+                                    " between anchors " + anchorLabel(options.anchorNames, se.a) + " and " +
+                                   anchorLabel(options.anchorNames, se.b) +
                                    " (" + std::to_string(pending.size()) + " edges left): " + lastReason +
                                    "; check that these anchors correspond, or add anchors nearby");
       return r;

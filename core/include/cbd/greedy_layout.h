@@ -16,6 +16,7 @@
 ///  4. post-processing granted for fairness: path flipping (an edge is replaced by the other
 ///     diagonal of its two patches when that is shorter on both meshes together).
 
+#include <string>
 #include <vector>
 
 #include "cbd/layout.h"
@@ -27,6 +28,7 @@ namespace cbd {
 struct GreedyLayoutOptions {
   EdgeNodeOptions edgeNodes;  ///< same graph as the Voronoi method
   bool flipPaths = true;      ///< post-processing: path flipping
+  std::vector<std::string> anchorNames;  ///< for messages (`anchorLabel`); empty: by position
 };
 
 /// Result of `buildGreedyLayout`: two isomorphic layouts (patch k corresponds to patch k).

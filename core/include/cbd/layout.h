@@ -21,6 +21,10 @@ enum class EdgeKind {
   Greedy          ///< accepted by the greedy shortest-path baseline (Kraevoy & Sheffer 2004)
 };
 
+/// How messages name anchor k: by its name in quotes when `names` has one (the names of the
+/// anchors in the order the layout builders take them), else by its position k.
+std::string anchorLabel(const std::vector<std::string>& names, int k);
+
 /// One edge of the layout: a path between two anchors along edges of the refined mesh.
 struct LayoutEdge {
   int a = -1, b = -1;          ///< anchor indices (a != b)

@@ -5,6 +5,7 @@
 /// patch parameterizations -> composed cross-map -> distortion. Every intermediate result is
 /// returned.
 
+#include <string>
 #include <vector>
 
 #include "cbd/distortion.h"
@@ -41,6 +42,9 @@ struct CrossParameterizationOptions {
   MapSmoothingOptions smoothing;        ///< 0 iterations: the composed map as it is
   bool untangle = true;                 ///< remove flipped triangles from M_st and M_ts (map_untangle.h)
   MapUntangleOptions untangling;
+  /// The anchors' names, in the order of the anchor vectors (both sides alike), for the layout
+  /// builders' messages; empty: anchors are named by their position.
+  std::vector<std::string> anchorNames;
 };
 
 /// Seconds spent in each stage.

@@ -18,6 +18,7 @@ namespace cbd {
 struct SourceLayoutOptions {
   EdgeNodeOptions edgeNodes;        ///< b = 3 adaptive (the paper's C); b = 1 fixed is E1
   int maxTriangulationPaths = -1;   ///< cap on extra paths; -1: 4 * anchors + 64
+  std::vector<std::string> anchorNames;  ///< for messages (`anchorLabel`); empty: by position
 };
 
 /// Result of `buildSourceLayout`: the layout and every intermediate stage.

@@ -37,6 +37,7 @@ struct TargetLayoutOptions {
   /// each of those anchors has a path on the target (unless nothing else can be traced). Needs
   /// the source layout's `faceCluster`; without it, or when false, Procedure 1's order alone.
   bool waitForPassedAnchors = true;
+  std::vector<std::string> anchorNames;  ///< for messages (`anchorLabel`); empty: by position
 };
 
 /// Result of `buildTargetLayout`.
