@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -67,6 +68,49 @@ bool writeJson(const std::string& path, const json& j) {
   fs::rename(tmp, target, ec);  // fails onto a folder, which is reported as such
   if (ec) fs::remove(tmp, ignored);
   return !ec;
+}
+
+/// Whether a new file can be created in `dir` (a probe file, removed at once): a permission
+/// check that holds for root, read-only mounts and pseudo file systems alike.
+bool canCreateIn(const std::filesystem::path& dir) {
+  const std::filesystem::path probe = dir / (".cbd-probe-" + std::to_string(::getpid()));
+  if (!std::ofstream(probe)) return false;
+  std::error_code ignored;
+  std::filesystem::remove(probe, ignored);
+  return true;
+}
+
+/// Before the computation (so that a run does not compute for minutes and then fail to save):
+/// create the output folder when missing and check that it takes new files.
+cbd::Status prepareOutputFolder(const std::string& outDir) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (fs::exists(outDir, ec) && !fs::is_directory(outDir, ec))
+    return cbd::Status::error(cbd::ErrorCode::OutputError, "output folder '" + outDir + "' is a file: choose another --out");
+  fs::create_directories(outDir, ec);
+  if (!fs::is_directory(outDir, ec))
+    return cbd::Status::error(cbd::ErrorCode::OutputError,
+                              "cannot create output folder '" + outDir + "'" + (ec ? " (" + ec.message() + ")" : "") +
+                                  ": choose --out under a writable folder");
+  if (!canCreateIn(outDir))
+    return cbd::Status::error(cbd::ErrorCode::OutputError,
+                              "cannot write into output folder '" + outDir + "': check its permissions, or choose another --out");
+  return cbd::Status::success();
+}
+
+/// The same for the JSON report (after the output folder, which may hold it): its folder exists
+/// and takes new files, and the path is not a folder.
+cbd::Status checkReportPath(const std::string& jsonPath) {
+  namespace fs = std::filesystem;
+  if (jsonPath.empty() || jsonPath == "-") return cbd::Status::success();
+  std::error_code ec;
+  const fs::path report(jsonPath);
+  const fs::path folder = report.parent_path().empty() ? fs::path(".") : report.parent_path();
+  if (fs::is_directory(report, ec) || !fs::is_directory(folder, ec) || !canCreateIn(folder))
+    return cbd::Status::error(cbd::ErrorCode::OutputError,
+                              "cannot write JSON report '" + jsonPath +
+                                  "' (check that its folder exists and is writable, and that it does not name a folder)");
+  return cbd::Status::success();
 }
 
 int finish(const cbd::Status& status, json& j, const std::string& jsonPath) {
@@ -183,6 +227,14 @@ struct RunArgs {
 
 double elapsed(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+/// Both output checks before a run; the exit code when one fails. A report that can be written
+/// still tells why the output folder cannot.
+std::optional<int> prepareOutputs(const RunArgs& a, json& j) {
+  if (cbd::Status s = prepareOutputFolder(a.out); !s) return finish(s, j, a.jsonPath);
+  if (cbd::Status s = checkReportPath(a.jsonPath); !s) return finish(s, j, "");
+  return std::nullopt;
 }
 
 /// The pipeline's options from the command line; `names`: the anchors' names, for messages.
@@ -303,6 +355,7 @@ int runSingleLayout(const RunArgs& a) {
   std::vector<int> anchors;
   cbd::SourceLayoutOptions opt;
   for (const auto& s : snapped) anchors.push_back(s.vertex), opt.anchorNames.push_back(s.name);
+  if (const std::optional<int> rc = prepareOutputs(a, j)) return *rc;
   opt.edgeNodes = pipelineOptions(a).edgeNodes;
   const cbd::SourceLayoutResult r = cbd::buildSourceLayout(source, anchors, opt);
   j["timing_s"] = {{"voronoi", r.voronoiSeconds}, {"source_layout", r.layoutSeconds}};
@@ -341,6 +394,7 @@ int runLayout(const RunArgs& a) {
   cbd::LoadedInput in;
   std::vector<int> sa, ta;
   if (cbd::Status s = loadPair(a, in, sa, ta, j); !s) return finish(s, j, a.jsonPath);
+  if (const std::optional<int> rc = prepareOutputs(a, j)) return *rc;
   cbd::LayoutPair p = cbd::buildLayouts(in.source, sa, in.target, ta, in.report.source.eulerCharacteristic,
                                          pipelineOptions(a, in.report.anchors.names));
   p.times.total = elapsed(t0);
@@ -364,11 +418,7 @@ int runMap(const RunArgs& a) {
   cbd::LoadedInput in;
   std::vector<int> sa, ta;
   if (cbd::Status s = loadPair(a, in, sa, ta, j); !s) return finish(s, j, a.jsonPath);
-  std::error_code ec;
-  std::filesystem::create_directories(a.out, ec);
-  if (!std::filesystem::is_directory(a.out))
-    return finish(cbd::Status::error(cbd::ErrorCode::OutputError, "cannot create output folder '" + a.out + "'"), j,
-                  a.jsonPath);
+  if (const std::optional<int> rc = prepareOutputs(a, j)) return *rc;
   cbd::CrossParameterizationResult r =
       cbd::crossParameterize(in.source, sa, in.target, ta, in.report.source.eulerCharacteristic,
                              pipelineOptions(a, in.report.anchors.names));

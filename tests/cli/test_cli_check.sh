@@ -229,6 +229,21 @@ if [ -f "$MESHES/cow.off" ] && [ -f "$EXAMPLES/cow_picked_points.pp" ]; then
   "$CBD" layout --source "$MESHES/cow.off" --source-anchors "$EXAMPLES/cow_picked_points.pp" --out /proc/nope \
     >/dev/null 2>&1; rc=$?
   [ "$rc" = "$(code_of output_error)" ] && ok "cbd layout into an unwritable folder: exit $rc" || bad "unwritable layout folder: exit $rc"
+  # Outputs that cannot be written are refused before the computation (nothing is written):
+  # a report under a plain file, an output folder that is a file.
+  touch plain_file
+  "$CBD" map --source "$MESHES/bull.off" --source-anchors "$EXAMPLES/bull_picked_points.pp" \
+    --target "$MESHES/cow.off" --target-anchors "$EXAMPLES/cow_picked_points.pp" --out early_json \
+    --json plain_file/r.json >early_json.out 2>early_json.err; rc=$?
+  [ "$rc" = "$(code_of output_error)" ] && grep -q "cannot write JSON report 'plain_file/r.json'" early_json.err &&
+    [ ! -e early_json/mst.ply ] && ! grep -q "^map" early_json.out &&
+    ok "map with --json under a plain file: exit $rc before computing" ||
+    bad "map with --json under a plain file: exit $rc, $(ls early_json 2>&1) $(cat early_json.err)"
+  "$CBD" layout --source "$MESHES/cow.off" --source-anchors "$EXAMPLES/cow_picked_points.pp" --out plain_file \
+    --json out_is_file.json >/dev/null 2>out_is_file.err; rc=$?
+  [ "$rc" = "$(code_of output_error)" ] && grep -q "output folder 'plain_file' is a file" out_is_file.err &&
+    grep -q '"status": "output_error"' out_is_file.json && [ ! -s plain_file ] &&
+    ok "layout --out onto a file: exit $rc, the report says why" || bad "layout --out onto a file: exit $rc, $(cat out_is_file.err)"
   # The main job: the bull mapped onto the cow, both methods.
   for method in voronoi greedy; do
     "$CBD" map --source "$MESHES/bull.off" --source-anchors "$EXAMPLES/bull_picked_points.pp" \
