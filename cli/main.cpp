@@ -479,8 +479,10 @@ int runMap(const RunArgs& a) {
     return finish(s, j, a.jsonPath);
   if (cbd::Status s = cbd::writeLayout(r.layouts.source, dir + "/" + cbd::kSourceLayoutFolder); !s) return finish(s, j, a.jsonPath);
   if (cbd::Status s = cbd::writeLayout(r.layouts.target, dir + "/" + cbd::kTargetLayoutFolder); !s) return finish(s, j, a.jsonPath);
+  int staleFrames = 0;
   if (a.morph > 0)
-    if (cbd::Status s = cbd::writeMorph(dir, in.sourceMesh, r.map.sourceImage, sa, a.morph); !s) return finish(s, j, a.jsonPath);
+    if (cbd::Status s = cbd::writeMorph(dir, in.sourceMesh, r.map.sourceImage, sa, a.morph, &staleFrames); !s)
+      return finish(s, j, a.jsonPath);
   printLayout(r.layouts);
   if (a.straighten > 0) {
     const auto &s = r.straightenSource, &t = r.straightenTarget;
@@ -513,6 +515,9 @@ int runMap(const RunArgs& a) {
   std::printf("wrote   %s/mst.ply (source connectivity on the target; face quality = stretch), %s/mts.ply,\n"
               "        %s/correspondence.txt, %s/{source,target}/ layouts%s\n",
               dir.c_str(), dir.c_str(), dir.c_str(), dir.c_str(), a.morph > 0 ? ", morph_*.ply" : "");
+  if (staleFrames > 0)
+    std::printf("removed %d morph frame%s after %s of an earlier, longer sequence\n", staleFrames,
+                staleFrames == 1 ? "" : "s", cbd::morphFileName(a.morph - 1).c_str());
   return finish(cbd::Status::success(), j, a.jsonPath);
 }
 

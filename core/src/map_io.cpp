@@ -86,7 +86,8 @@ std::string morphFileName(int k) {
 }
 
 Status writeMorph(const std::string& dir, const Mesh& from, const std::vector<Vec3>& image,
-                  const std::vector<int>& anchors, int count) {
+                  const std::vector<int>& anchors, int count, int* staleRemoved) {
+  if (staleRemoved) *staleRemoved = 0;
   if (count < 2) return Status::error(ErrorCode::InvalidArgument, "a morph needs at least 2 frames");
   // Best similarity taking the source anchors onto their images.
   Eigen::Matrix3Xd src(3, anchors.size()), dst(3, anchors.size());
@@ -108,6 +109,16 @@ Status writeMorph(const std::string& dir, const Mesh& from, const std::vector<Ve
       m.vert[v].P() = vcg::Point3d(q.x(), q.y(), q.z());
     }
     if (Status s = savePly((std::filesystem::path(dir) / morphFileName(k)).string(), m, opt); !s) return s;
+  }
+  // The rest of a longer sequence written there before: a mixed sequence would be misread.
+  for (int k = count;; ++k) {
+    const std::filesystem::path stale = std::filesystem::path(dir) / morphFileName(k);
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(stale, ec)) break;
+    if (!std::filesystem::remove(stale, ec))
+      return Status::error(ErrorCode::OutputError, "cannot remove '" + stale.string() +
+                                                       "', a frame of an earlier, longer morph sequence");
+    if (staleRemoved) ++*staleRemoved;
   }
   return Status::success();
 }

@@ -305,6 +305,15 @@ PY
     cmp -s "map_voronoi/$f" "map_again/$f" || same=0
   done
   [ "$same" = 1 ] && ok "cbd map twice: byte-identical outputs" || bad "cbd map twice: outputs differ"
+  # A shorter morph into the same folder leaves one sequence: the earlier run's last frame goes.
+  "$CBD" map --source "$MESHES/bull.off" --source-anchors "$EXAMPLES/bull_picked_points.pp" \
+    --target "$MESHES/cow.off" --target-anchors "$EXAMPLES/cow_picked_points.pp" --out map_again --morph 2 \
+    >morph2.out 2>&1; rc=$?
+  [ "$rc" = 0 ] && [ -s map_again/morph_001.ply ] && [ ! -e map_again/morph_002.ply ] &&
+    grep -q "removed 1 morph frame after morph_001.ply" morph2.out &&
+    ! cmp -s map_again/morph_001.ply map_voronoi/morph_001.ply &&
+    ok "cbd map --morph 2 over --morph 3: $(grep removed morph2.out)" ||
+    bad "cbd map --morph 2 over --morph 3: exit $rc, $(ls map_again) $(tail -2 morph2.out)"
   # Per-vertex texture coordinates of the target carried onto mst.ply (and the source's onto
   # mts.ply): the pair as PLY with u, v a linear function of x, y; each image lies on the other
   # surface, so its interpolated u, v must be that function of its own position.

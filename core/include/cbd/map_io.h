@@ -41,16 +41,17 @@ void buildMappedMesh(const Mesh& from, const std::vector<Vec3>& image, const std
                      Mesh& out);
 
 /// Write the correspondence: one line per vertex of the source, `vertex face b0 b1 b2 x y z`
-/// (face -1 for unreferenced vertices). OutputError on failure.
+/// (unreferenced vertices: face -1, zeros, their own position). OutputError on failure.
 Status writeCorrespondence(const std::string& path, const std::vector<FacePoint>& points,
                            const std::vector<Vec3>& image);
 
 /// Write `count` meshes `dir/morph_000.ply` ... blending `from` (t = 0) into its image (t = 1)
 /// linearly, as in the paper's Fig. 10-11. `from` is first moved onto the image by the
 /// similarity (rotation, uniform scale, translation) that best fits its anchors onto theirs
-/// (Umeyama 1991), so models posed in different frames blend without collapsing.
-/// OutputError on failure.
+/// (Umeyama 1991), so models posed in different frames blend without collapsing. Frames
+/// `count`, `count + 1`, ... of an earlier, longer sequence in `dir` are removed (their number in
+/// `staleRemoved`), so the folder holds one sequence. OutputError on failure.
 Status writeMorph(const std::string& dir, const Mesh& from, const std::vector<Vec3>& image,
-                  const std::vector<int>& anchors, int count);
+                  const std::vector<int>& anchors, int count, int* staleRemoved = nullptr);
 
 }  // namespace cbd
