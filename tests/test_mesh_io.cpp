@@ -2,11 +2,13 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <cmath>
 #include <cstdint>
 #include <fstream>
 
 #include "cbd/map_io.h"
 #include "cbd/mesh.h"
+#include "cbd/validate_input.h"
 #include "support/fixtures.h"
 
 using namespace cbd;
@@ -163,6 +165,38 @@ TEST(MeshIO, ObjAndStl) {
   ASSERT_TRUE(r.status.ok()) << r.status.message;
   EXPECT_EQ(s.FN(), 4);
   EXPECT_EQ(s.VN(), 4);  // the triangle soup is welded
+}
+
+// A NaN or infinite coordinate is read in every text format (as MeshLab reads it) and left to
+// validation, which names the vertex (InvalidCoordinates), rather than a parse error naming a
+// line; in an integer PLY property it is no number and the file is malformed.
+TEST(MeshIO, NonFiniteCoordinatesAreReadForValidationToReport) {
+  TempDir d;
+  const std::string plyHead =
+      "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\nproperty float z\n"
+      "element face 4\nproperty list uchar int vertex_indices\nend_header\n";
+  const std::string plyFaces = "3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n";
+  write(d.file("n.ply"), plyHead + "1 1 1\n1 -1 -1\n-1 1 -1\nnan -1 1\n" + plyFaces);
+  write(d.file("n.obj"), "v 1 1 1\nv 1 -1 -1\nv -1 1 -1\nv -1 -1 inf\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n");
+  write(d.file("n.off"), "OFF\n4 4 0\n1 1 1\n1 -1 -1\n-1 1 -1\n-1 NaN 1\n" + plyFaces);
+  write(d.file("n.stl"), "solid n\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 -inf 0\n"
+                         "endloop\nendfacet\nendsolid n\n");
+  for (const char* name : {"n.ply", "n.obj", "n.off", "n.stl"}) {
+    Mesh m;
+    const LoadResult r = loadMesh(d.file(name), m);
+    ASSERT_TRUE(r.status.ok()) << name << ": " << r.status.message;
+    int nonFinite = 0;
+    for (const auto& v : m.vert) nonFinite += !(std::isfinite(v.cP()[0]) && std::isfinite(v.cP()[1]) && std::isfinite(v.cP()[2]));
+    EXPECT_EQ(nonFinite, 1) << name;
+    const MeshReport rep = validateMesh(toIndexed(m), "source", r.hadPolygons);
+    EXPECT_EQ(rep.status.code, ErrorCode::InvalidCoordinates) << name << ": " << rep.status.message;
+  }
+  // An integer property holds no NaN.
+  write(d.file("i.ply"), "ply\nformat ascii 1.0\nelement vertex 4\nproperty int x\nproperty int y\nproperty int z\n"
+                         "element face 4\nproperty list uchar int vertex_indices\nend_header\n"
+                         "1 1 1\n1 -1 -1\n-1 1 -1\nnan -1 1\n" + plyFaces);
+  Mesh m;
+  EXPECT_EQ(loadMesh(d.file("i.ply"), m).status.code, ErrorCode::MalformedMesh);
 }
 
 TEST(MeshIO, Errors) {

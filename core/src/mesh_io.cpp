@@ -43,6 +43,14 @@ void fill(Mesh& mesh, const std::vector<Vec3>& pos, const std::vector<vcg::Color
   }
 }
 
+// A whole token as a number, NaN and infinity included (validation reports those as
+// InvalidCoordinates, naming the vertex, where a parse error could only name the line).
+bool parseNumber(const std::string& t, double& v) {
+  char* end = nullptr;
+  v = std::strtod(t.c_str(), &end);
+  return !t.empty() && end && *end == '\0';
+}
+
 // Wavefront OBJ: `v x y z [r g b]` and `f a[/t[/n]] b c ...` (1-based or negative indices);
 // polygons are fan-triangulated and flagged. Returns an error text, empty on success.
 std::string readObj(const std::string& path, Mesh& mesh, int& mask) {
@@ -60,8 +68,10 @@ std::string readObj(const std::string& path, Mesh& mesh, int& mask) {
     std::string head;
     if (!(ls >> head)) continue;
     if (head == "v") {
+      std::string xs, ys, zs;
       double x, y, z;
-      if (!(ls >> x >> y >> z)) return "line " + std::to_string(lineNo) + ": bad vertex statement";
+      if (!(ls >> xs >> ys >> zs) || !parseNumber(xs, x) || !parseNumber(ys, y) || !parseNumber(zs, z))
+        return "line " + std::to_string(lineNo) + ": bad vertex statement";
       pos.emplace_back(x, y, z);
       double r, g, b;
       if (ls >> r >> g >> b) {
@@ -119,12 +129,6 @@ std::string readOff(const std::string& path, Mesh& mesh, int& mask, std::vector<
     return "only 3D OFF is supported (found '" + magic + "')";
   const bool hasST = flags.find("ST") != std::string::npos, hasC = flags.find('C') != std::string::npos,
              hasN = flags.find('N') != std::string::npos;
-  // Any number, NaN and infinity included: validation reports those as InvalidCoordinates.
-  auto num = [](const std::string& t, double& v) {
-    char* end = nullptr;
-    v = std::strtod(t.c_str(), &end);
-    return end && *end == '\0';
-  };
   auto integer = [](const std::string& t, long& v) {
     char* end = nullptr;
     v = std::strtol(t.c_str(), &end, 10);
@@ -148,7 +152,7 @@ std::string readOff(const std::string& path, Mesh& mesh, int& mask, std::vector<
   for (long v = 0; v < nv; ++v) {
     const auto& t = lines[next++];
     double x, y, z;
-    if (t.size() < 3 || !num(t[0], x) || !num(t[1], y) || !num(t[2], z))
+    if (t.size() < 3 || !parseNumber(t[0], x) || !parseNumber(t[1], y) || !parseNumber(t[2], z))
       return "vertex " + std::to_string(v) + " has no three numeric coordinates";
     pos[v] = Vec3(x, y, z);
     const size_t c0 = 3 + (hasN ? 3 : 0);
@@ -156,7 +160,7 @@ std::string readOff(const std::string& path, Mesh& mesh, int& mask, std::vector<
       double c[4] = {0, 0, 0, 255};
       const size_t nc = std::min<size_t>(4, t.size() - c0 - (hasST ? 2 : 0));
       bool ok = nc >= 3;
-      for (size_t k = 0; k < nc && ok; ++k) ok = num(t[c0 + k], c[k]) && std::isfinite(c[k]);
+      for (size_t k = 0; k < nc && ok; ++k) ok = parseNumber(t[c0 + k], c[k]) && std::isfinite(c[k]);
       if (ok) {
         const bool unit = c[0] <= 1.0 && c[1] <= 1.0 && c[2] <= 1.0 && (nc < 4 || c[3] <= 1.0);
         auto b = [&](double x) { return static_cast<unsigned char>(std::clamp(unit ? x * 255.0 : x, 0.0, 255.0)); };
@@ -277,7 +281,11 @@ std::string checkPly(const std::string& path) {
   if (!ascii && !little && format != "binary_big_endian") return "an unknown format '" + format + "'";
   // Read one value of a property's type as a double (integers exact below 2^53).
   auto readValue = [&](int size, bool isSigned, bool isFloat, double& v) -> bool {
-    if (ascii) return static_cast<bool>(in >> v);
+    if (ascii) {
+      std::string t;
+      if (!(in >> t) || !parseNumber(t, v)) return false;
+      return std::isfinite(v) || isFloat;  // NaN / infinity: in float properties only
+    }
     unsigned char b[8];
     if (!in.read(reinterpret_cast<char*>(b), size)) return false;
     if (!little) std::reverse(b, b + size);
@@ -330,10 +338,8 @@ std::string readAsciiStl(std::istream& in, Mesh& mesh) {
     if (word != "vertex") continue;
     std::string xs, ys, zs;
     if (!(in >> xs >> ys >> zs)) return "a vertex line without three coordinates";
-    char* end[3];
-    const double x = std::strtod(xs.c_str(), &end[0]), y = std::strtod(ys.c_str(), &end[1]),
-                 z = std::strtod(zs.c_str(), &end[2]);
-    if (*end[0] || *end[1] || *end[2]) return "a vertex with a non-numeric coordinate";
+    double x, y, z;
+    if (!parseNumber(xs, x) || !parseNumber(ys, y) || !parseNumber(zs, z)) return "a vertex with a non-numeric coordinate";
     corners.emplace_back(x, y, z);
   }
   if (corners.empty() || corners.size() % 3 != 0) return "the facets do not have three vertices each";
