@@ -83,6 +83,40 @@ TEST(Anchors, VertexListLikeShrecVts) {
   EXPECT_EQ(s.anchors[1].line, 3);
 }
 
+// What editors put around the lines: a UTF-8 byte-order mark before the first (it was read
+// as part of the first index, so the file was taken for named points), and CR LF or lone CR
+// line ends (a lone-CR file was one line).
+TEST(Anchors, ByteOrderMarkAndLineEndsOfOtherSystems) {
+  for (const std::string& text : {std::string("\xEF\xBB\xBF") + "12\n7\n3\n", std::string("12\r\n7\r\n3\r\n"),
+                                  std::string("12\r7\r3"), std::string("\xEF\xBB\xBF") + "12\r7\r\n3\n"}) {
+    const AnchorSet s = parseAnchors(text, "x.vts");
+    ASSERT_TRUE(s.status.ok()) << s.status.message;
+    EXPECT_EQ(s.format, AnchorFormat::VertexList);
+    ASSERT_EQ(s.anchors.size(), 3u);
+    EXPECT_EQ(s.anchors[0].vertex, 12);
+    EXPECT_EQ(s.anchors[1].vertex, 7);
+    EXPECT_EQ(s.anchors[2].vertex, 3);
+    EXPECT_EQ(s.anchors[2].line, 3);
+  }
+  // Named points: the first name is "nose", not the mark and "nose"; a bad line is numbered
+  // by the lone CRs too.
+  const AnchorSet named = parseAnchors("\xEF\xBB\xBFnose 1 2 3\rtail 4 5 6\r", "n.txt");
+  ASSERT_TRUE(named.status.ok()) << named.status.message;
+  ASSERT_EQ(named.anchors.size(), 2u);
+  EXPECT_EQ(named.anchors[0].name, "nose");
+  EXPECT_EQ(named.anchors[1].name, "tail");
+  const AnchorSet bad = parseAnchors("nose 1 2 3\rtail 4 x 6\r", "n.txt");
+  EXPECT_EQ(bad.status.code, ErrorCode::MalformedAnchors);
+  EXPECT_NE(bad.status.message.find("line 2"), std::string::npos) << bad.status.message;
+  // A .pp file with a mark is still XML.
+  const AnchorSet pp = parseAnchors("\xEF\xBB\xBF<?xml version=\"1.0\"?>\r\n<PickedPoints>\r<point x=\"1\" y=\"2\" z=\"3\" "
+                                    "name=\"a\"/>\r</PickedPoints>\r",
+                                    "m.pp");
+  ASSERT_TRUE(pp.status.ok()) << pp.status.message;
+  ASSERT_EQ(pp.anchors.size(), 1u);
+  EXPECT_EQ(pp.anchors[0].name, "a");
+}
+
 TEST(Anchors, VertexListBadLine) {
   const AnchorSet s = parseAnchors("1 0 0 0\n2 0 0\n", "x.vts");
   EXPECT_EQ(s.status.code, ErrorCode::MalformedAnchors);

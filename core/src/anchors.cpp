@@ -6,6 +6,8 @@
 #include <fstream>
 #include <limits>
 #include <sstream>
+#include <string>
+#include <string_view>
 #include <unordered_map>
 #include <unordered_set>
 
@@ -187,9 +189,19 @@ AnchorSet parseLines(const std::string& text, const std::string& label) {
 }  // namespace
 
 AnchorSet parseAnchors(const std::string& text, const std::string& label) {
-  const auto first = text.find_first_not_of(" \t\r\n\xEF\xBB\xBF");
-  if (first != std::string::npos && text[first] == '<') return parsePickedPoints(text, label);
-  return parseLines(text, label);
+  // A UTF-8 byte-order mark (Windows editors write one) is not part of the first line.
+  const std::string_view bom = "\xEF\xBB\xBF";
+  const std::string body = text.compare(0, bom.size(), bom) == 0 ? text.substr(bom.size()) : text;
+  const auto first = body.find_first_not_of(" \t\r\n");
+  if (first != std::string::npos && body[first] == '<') return parsePickedPoints(body, label);
+  // Lines end in LF, CR LF or a lone CR (classic Mac OS): the line numbers of messages count them all.
+  std::string lines;
+  lines.reserve(body.size());
+  for (size_t i = 0; i < body.size(); ++i) {
+    if (body[i] != '\r') lines += body[i];
+    else if (i + 1 >= body.size() || body[i + 1] != '\n') lines += '\n';
+  }
+  return parseLines(lines, label);
 }
 
 AnchorSet readAnchors(const std::string& path) {
