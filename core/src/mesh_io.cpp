@@ -12,6 +12,8 @@
 #include <sstream>
 #include <system_error>
 
+#include <unistd.h>
+
 #include <vcg/complex/append.h>
 #include <wrap/io_trimesh/export_ply.h>
 #include <wrap/io_trimesh/import_ply.h>
@@ -202,15 +204,28 @@ std::string readOff(const std::string& path, Mesh& mesh, int& mask, std::vector<
 // a list count out of range or a vertex index outside the vertex element all read or write
 // out of bounds (found by fuzzing). The whole file is walked here first, header and body,
 // ASCII or binary. Returns an error text, empty when the file is safe to hand to vcglib.
-std::string checkPly(const std::string& path) {
+// vcglib 2020.09's PLY importer misreads many face index lists (ushort/short/uint counts,
+// uchar/char/ushort indices, an int count with short indices...: faces lost, or wrong indices
+// loaded without an error); the list MeshLab itself writes, uchar counts and int indices, it reads.
+bool vcglibReadsFaceList(const std::string& countType, const std::string& indexType) {
+  return (countType == "uchar" || countType == "uint8") && (indexType == "int" || indexType == "int32");
+}
+
+// Check a PLY file fully (vcglib trusts its counts and indices). When its face index list has
+// types vcglib misreads, `transcoded` receives the same file with that list as `int int`.
+std::string checkPly(const std::string& path, std::string& transcoded) {
+  transcoded.clear();
   std::ifstream in(path, std::ios::binary);
   std::string line;
   if (!std::getline(in, line) || line.rfind("ply", 0) != 0) return "no 'ply' magic line";
+  std::vector<std::string> header{"ply"};
+  bool transcode = false;
   struct Property {
     bool list = false;
     int countSize = 0, itemSize = 0;  // bytes (binary); list count and item (or scalar) type
     bool countSigned = false, itemSigned = false, itemFloat = false;
     std::string name;
+    bool transcode = false;  // the face index list, re-encoded as int int
   };
   struct Element {
     std::string name;
@@ -233,6 +248,7 @@ std::string checkPly(const std::string& path) {
     if (!line.empty() && line.back() == '\r') line.pop_back();
     for (unsigned char c : line)
       if ((c < 32 && c != '\t') || c > 126) return "a header line holds binary data";
+    header.push_back(line);
     std::istringstream ls(line);
     std::string word;
     ls >> word;
@@ -257,6 +273,11 @@ std::string checkPly(const std::string& path) {
         pr.countSize = typeSize(ct, pr.countSigned, f);
         pr.itemSize = typeSize(it, pr.itemSigned, pr.itemFloat);
         if (!pr.countSize || f || !pr.itemSize) return "an unknown list type '" + ct + "'/'" + it + "'";
+        if (elements.back().name == "face" && (pr.name == "vertex_indices" || pr.name == "vertex_index") &&
+            !pr.itemFloat && !vcglibReadsFaceList(ct, it)) {
+          pr.transcode = transcode = true;
+          header.back() = "property list int int " + pr.name;
+        }
       } else {
         ls >> pr.name;
         pr.itemSize = typeSize(type, pr.itemSigned, pr.itemFloat);
@@ -279,6 +300,24 @@ std::string checkPly(const std::string& path) {
   const bool ascii = format == "ascii";
   const bool little = format == "binary_little_endian";
   if (!ascii && !little && format != "binary_big_endian") return "an unknown format '" + format + "'";
+  // The transcoded copy: the header with the face list's types replaced; then the ASCII data
+  // as it is, or the binary data copied value by value (`copy`) with the list re-encoded.
+  if (transcode) {
+    for (const std::string& h : header) transcoded += h + "\n";
+    if (ascii) {
+      std::ostringstream rest;
+      rest << in.rdbuf();
+      transcoded += rest.str();
+      in.clear();
+      in.seekg(dataStart);
+    }
+  }
+  bool copy = transcode && !ascii;
+  auto put = [&](std::int64_t value, int size) {
+    unsigned char b[4];
+    for (int k = 0; k < size; ++k) b[little ? k : size - 1 - k] = static_cast<unsigned char>(value >> (8 * k));
+    transcoded.append(reinterpret_cast<const char*>(b), size);
+  };
   // Read one value of a property's type as a double (integers exact below 2^53).
   auto readValue = [&](int size, bool isSigned, bool isFloat, double& v) -> bool {
     if (ascii) {
@@ -288,6 +327,7 @@ std::string checkPly(const std::string& path) {
     }
     unsigned char b[8];
     if (!in.read(reinterpret_cast<char*>(b), size)) return false;
+    if (copy) transcoded.append(reinterpret_cast<const char*>(b), size);
     if (!little) std::reverse(b, b + size);
     if (isFloat) {
       if (size == 4) { float x; std::memcpy(&x, b, 4); v = x; } else { double x; std::memcpy(&x, b, 8); v = x; }
@@ -315,8 +355,10 @@ std::string checkPly(const std::string& path) {
           continue;
         }
         double count = 0;
+        copy = transcode && !ascii && !pr.transcode;
         if (!readValue(pr.countSize, pr.countSigned, false, count)) return "the file ends inside element '" + e.name + "'";
         if (count < 0 || count != std::floor(count) || count > 256) return "a list of " + std::to_string(count) + " items";
+        if (pr.transcode && !ascii) put(static_cast<std::int64_t>(count), 4);
         const bool indices = isFace && (pr.name == "vertex_indices" || pr.name == "vertex_index");
         if (indices && count < 3) return "face " + std::to_string(i) + " has fewer than 3 vertices";
         for (int k = 0; k < static_cast<int>(count); ++k) {
@@ -324,7 +366,9 @@ std::string checkPly(const std::string& path) {
           if (indices && (v < 0 || v >= static_cast<double>(vertices) || v != std::floor(v)))
             return "face " + std::to_string(i) + " refers to vertex " + std::to_string(v) + " of " +
                    std::to_string(vertices);
+          if (pr.transcode && !ascii) put(static_cast<std::int64_t>(v), 4);
         }
+        copy = transcode && !ascii;
       }
   }
   return {};
@@ -401,8 +445,30 @@ LoadResult loadMeshUnchecked(const std::string& path, Mesh& mesh) {
   std::string what;
   namespace io = vcg::tri::io;
   if (ext == ".ply") {
-    what = checkPly(path);
-    if (what.empty()) err = io::ImporterPLY<Mesh>::Open(mesh, path.c_str(), mask);
+    std::string transcoded;
+    what = checkPly(path, transcoded);
+    if (what.empty() && transcoded.empty()) {
+      err = io::ImporterPLY<Mesh>::Open(mesh, path.c_str(), mask);
+    } else if (what.empty()) {
+      // The copy with a face list vcglib reads, through a temporary file (its importer reads files only).
+      const std::filesystem::path tmp = std::filesystem::temp_directory_path() /
+                                        ("cbd-ply-" + std::to_string(::getpid()) + "-" +
+                                         std::to_string(reinterpret_cast<std::uintptr_t>(&mesh)) + ".ply");
+      bool written = false;
+      {
+        std::ofstream out(tmp, std::ios::binary);
+        written = static_cast<bool>(out << transcoded) && out.flush().good();
+      }
+      if (written) err = io::ImporterPLY<Mesh>::Open(mesh, tmp.string().c_str(), mask);
+      std::error_code ignored;
+      std::filesystem::remove(tmp, ignored);
+      if (!written) {
+        r.status = Status::error(ErrorCode::OutputError,
+                                 "cannot write '" + tmp.string() + "', the copy of '" + path +
+                                     "' with a face list vcglib reads (check that TMPDIR is a writable folder)");
+        return r;
+      }
+    }
     if (err != 0 && io::ImporterPLY<Mesh>::ErrorCritical(err)) what = io::ImporterPLY<Mesh>::ErrorMsg(err);
   } else if (ext == ".off") {
     what = readOff(path, mesh, mask, r.warnings);
