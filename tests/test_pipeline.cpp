@@ -13,6 +13,23 @@
 using namespace cbd;
 namespace fx = cbd::fixtures;
 
+namespace {
+/// An icosphere (3 levels) with `count` farthest-point anchors, and a finer one (4 levels) with
+/// the anchors at the nearest vertices, then moved by `deform`.
+struct AnchoredPair {
+  IndexedMesh source, target;
+  std::vector<int> sourceAnchors, targetAnchors;
+};
+template <typename Deform>
+AnchoredPair anchoredSpheres(int count, Deform deform) {
+  AnchoredPair p{fx::icosphere(3), fx::icosphere(4), {}, {}};
+  p.sourceAnchors = farthestPointSampling(p.source, count);
+  for (int v : p.sourceAnchors) p.targetAnchors.push_back(fx::nearestVertex(p.target, p.source.positions[v]));
+  for (auto& x : p.target.positions) x = deform(x);
+  return p;
+}
+}  // namespace
+
 TEST(LengthDetour, OneWhenEveryPathIsScaledAlike) {
   const IndexedMesh s = fx::icosphere(3);
   IndexedMesh t = s;
@@ -35,13 +52,8 @@ TEST(LengthDetour, OneWhenEveryPathIsScaledAlike) {
 }
 
 TEST(Pipeline, SphereToEllipsoidKeepsTheSourceDiagram) {
-  const IndexedMesh s = fx::icosphere(3);
-  IndexedMesh t = fx::icosphere(4);
-  const std::vector<int> sa = farthestPointSampling(s, 20);
-  std::vector<int> ta;
-  for (int v : sa) ta.push_back(fx::nearestVertex(t, s.positions[v]));
-  for (auto& p : t.positions) p = Vec3(1.6 * p.x(), p.y(), 0.8 * p.z());
-  const LayoutPair p = buildLayouts(s, sa, t, ta, 2, {});
+  const AnchoredPair e = anchoredSpheres(20, [](const Vec3& x) { return Vec3(1.6 * x.x(), x.y(), 0.8 * x.z()); });
+  const LayoutPair p = buildLayouts(e.source, e.sourceAnchors, e.target, e.targetAnchors, 2, {});
   ASSERT_TRUE(p.status.ok()) << p.status.message;
   EXPECT_FALSE(p.triedReverse) << "detour " << p.detour;
   EXPECT_FALSE(p.reversed);
@@ -147,16 +159,13 @@ TEST(Pipeline, AScalingByAPowerOfTwoChangesNothingButTheScale) {
   // (exact in floating point, so no rounding differs) give the same layouts, the same metrics and
   // images scaled by 8, for both methods. (A scaling by 10 rounds every coordinate, which can
   // break ties of the searches differently.)
-  const IndexedMesh s = fx::icosphere(3);
-  IndexedMesh t = fx::icosphere(4);
-  const std::vector<int> sa = farthestPointSampling(s, 8);
-  std::vector<int> ta;
-  for (int v : sa) ta.push_back(fx::nearestVertex(t, s.positions[v]));
   // A twisted, bent ellipsoid: the composed map has flipped triangles to untangle.
-  for (auto& p : t.positions) {
+  const AnchoredPair pair = anchoredSpheres(8, [](const Vec3& p) {
     const double a = 2.5 * p.x(), c = std::cos(a), sn = std::sin(a);
-    p = Vec3(2.0 * p.x() + 0.5 * p.y() * p.y(), c * p.y() - sn * 0.6 * p.z(), sn * p.y() + c * 0.6 * p.z());
-  }
+    return Vec3(2.0 * p.x() + 0.5 * p.y() * p.y(), c * p.y() - sn * 0.6 * p.z(), sn * p.y() + c * 0.6 * p.z());
+  });
+  const IndexedMesh &s = pair.source, &t = pair.target;
+  const std::vector<int> &sa = pair.sourceAnchors, &ta = pair.targetAnchors;
   IndexedMesh s8 = s, t8 = t;
   for (auto& p : s8.positions) p *= 8.0;
   for (auto& p : t8.positions) p *= 8.0;
