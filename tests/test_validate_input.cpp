@@ -52,6 +52,33 @@ TEST(ValidateMesh, OpenBoundaryNamesAnEdge) {
   EXPECT_EQ(r.status.code, ErrorCode::OpenBoundary);
   EXPECT_NE(r.status.message.find("24 boundary edges"), std::string::npos) << r.status.message;
   EXPECT_EQ(check(fx::openCone(10)).status.code, ErrorCode::OpenBoundary);
+  EXPECT_NE(r.status.message.find("Close Holes"), std::string::npos) << r.status.message;
+}
+
+// A closed surface whose faces do not share vertices (a triangle soup: some OBJ exporters) is
+// open everywhere; the advice is to merge vertices, not to close holes. With some of its vertices
+// merged it still is; a mesh with a real hole whose boundary touches no duplicate is not.
+TEST(ValidateMesh, AnUnweldedMeshIsToldToMergeVertices) {
+  const IndexedMesh sphere = fx::icosphere(1);
+  IndexedMesh soup;
+  for (const auto& t : sphere.faces) {
+    const int base = soup.vertexCount();
+    for (int v : t) soup.positions.push_back(sphere.positions[v]);
+    soup.faces.push_back({base, base + 1, base + 2});
+  }
+  const MeshReport r = check(soup);
+  ASSERT_EQ(r.status.code, ErrorCode::OpenBoundary);
+  EXPECT_NE(r.status.message.find(std::to_string(3 * sphere.faceCount()) + " boundary edges"), std::string::npos)
+      << r.status.message;
+  EXPECT_NE(r.status.message.find(std::to_string(soup.vertexCount()) + " of its " + std::to_string(soup.vertexCount()) +
+                                  " boundary vertices lie at the position of another vertex"),
+            std::string::npos)
+      << r.status.message;
+  EXPECT_NE(r.status.message.find("Merge Close Vertices"), std::string::npos) << r.status.message;
+  EXPECT_EQ(r.status.message.find("Close Holes"), std::string::npos) << r.status.message;
+  // An open cylinder whose vertices are all distinct: holes to close.
+  const MeshReport open = check(fx::openCylinder(1, 2, 12, 4));
+  EXPECT_EQ(open.status.message.find("Merge Close Vertices"), std::string::npos) << open.status.message;
 }
 
 TEST(ValidateMesh, NonManifoldEdge) {

@@ -1,7 +1,9 @@
 #include "cbd/validate_input.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <map>
 #include <numeric>
 #include <tuple>
 #include <sstream>
@@ -185,10 +187,35 @@ MeshReport validateMesh(const IndexedMesh& mesh, const std::string& name, bool h
       return r;
     }
     if (boundary) {
-      r.status = fail(ErrorCode::OpenBoundary, name,
-                      str(boundary) + " boundary edges: the surface is not closed (e.g. edge " +
-                          str(exBoundary->lo) + "-" + str(exBoundary->hi) + " of face " + str(exBoundary->face) + ")",
-                      "close the holes first (MeshLab: Filters > Remeshing, Simplification and Reconstruction > Close Holes)");
+      // Boundary vertices at the very position of another vertex: an unwelded mesh (a triangle
+      // soup, as some OBJ and STL exporters write), whose fix is merging vertices, not closing holes.
+      std::vector<char> onBoundary(mesh.vertexCount(), 0), used(mesh.vertexCount(), 0);
+      for (const auto& t : mesh.faces)
+        for (int v : t) used[v] = 1;
+      for (size_t i = 0; i < he.size();) {
+        size_t j = i;
+        while (j < he.size() && he[j].lo == he[i].lo && he[j].hi == he[i].hi) ++j;
+        if (j - i == 1) onBoundary[he[i].lo] = onBoundary[he[i].hi] = 1;
+        i = j;
+      }
+      auto key = [&](int v) { return std::array<double, 3>{mesh.positions[v].x(), mesh.positions[v].y(), mesh.positions[v].z()}; };
+      std::map<std::array<double, 3>, int> verticesAt;
+      for (int v = 0; v < mesh.vertexCount(); ++v)
+        if (used[v]) ++verticesAt[key(v)];
+      int boundaryVertices = 0, unwelded = 0;
+      for (int v = 0; v < mesh.vertexCount(); ++v)
+        if (onBoundary[v]) ++boundaryVertices, unwelded += verticesAt[key(v)] > 1;
+      const std::string what = str(boundary) + " boundary edges: the surface is not closed (e.g. edge " +
+                               str(exBoundary->lo) + "-" + str(exBoundary->hi) + " of face " + str(exBoundary->face) + ")";
+      if (2 * unwelded > boundaryVertices)
+        r.status = fail(ErrorCode::OpenBoundary, name,
+                        what + "; " + str(unwelded) + " of its " + str(boundaryVertices) +
+                            " boundary vertices lie at the position of another vertex: the faces are not joined (an "
+                            "unwelded mesh, or triangle soup)",
+                        "merge the vertices first (MeshLab: Filters > Cleaning and Repairing > Merge Close Vertices)");
+      else
+        r.status = fail(ErrorCode::OpenBoundary, name, what,
+                        "close the holes first (MeshLab: Filters > Remeshing, Simplification and Reconstruction > Close Holes)");
       return r;
     }
     if (flipped) {
