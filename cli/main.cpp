@@ -80,6 +80,30 @@ bool canCreateIn(const std::filesystem::path& dir) {
   return true;
 }
 
+/// A command line that does not parse still gets its JSON report when it names one (`--json
+/// PATH`, `--json=PATH`, `-` for stdout), so that a script reading reports sees the error.
+/// Not when PATH is the same file as another argument: that may be an input.
+void writeParseErrorReport(int argc, char** argv, const std::string& message) {
+  namespace fs = std::filesystem;
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    std::string path;
+    int valueAt = -1;
+    if (arg == "--json" && i + 1 < argc) path = argv[i + 1], valueAt = i + 1;
+    else if (arg.rfind("--json=", 0) == 0) path = arg.substr(7), valueAt = i;
+    if (path.empty() || (path[0] == '-' && path != "-")) continue;
+    std::error_code ec;
+    if (path != "-" && fs::exists(path, ec))
+      for (int k = 1; k < argc; ++k)
+        if (k != valueAt && fs::is_regular_file(argv[k], ec) && fs::equivalent(argv[k], path, ec)) return;
+    json j;
+    j["status"] = cbd::errorCodeName(cbd::ErrorCode::InvalidArgument);
+    j["message"] = message;
+    writeJson(path, j);
+    return;
+  }
+}
+
 /// Before the computation (so that a run does not compute for minutes and then fail to save):
 /// create the output folder when missing and check that it takes new files.
 cbd::Status prepareOutputFolder(const std::string& outDir) {
@@ -668,7 +692,9 @@ int main(int argc, char** argv) {
   } catch (const CLI::CallForVersion& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
-    std::cerr << "cbd: error: invalid_argument: " << e.what() << " (see cbd --help)\n";
+    const std::string message = std::string(e.what()) + " (see cbd --help)";
+    std::cerr << "cbd: error: invalid_argument: " << message << "\n";
+    writeParseErrorReport(argc, argv, message);
     return cbd::exitCode(cbd::ErrorCode::InvalidArgument);
   }
 

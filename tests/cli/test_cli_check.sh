@@ -163,6 +163,14 @@ expect too_many             too_many_anchors     -- --source octa.off --target o
 "$CBD" layout --source octa.off --source-anchors octa.txt -o e1_out --single-edge-node --min-edge-nodes 5 >/dev/null 2>e1b.err; rc=$?
 [ "$rc" = 2 ] && grep -q "excludes" e1b.err && [ ! -e e1_out ] &&
   ok "--single-edge-node with --min-edge-nodes: exit 2, $(cat e1b.err)" || bad "--single-edge-node with --min-edge-nodes: exit $rc, $(cat e1b.err)"
+# A command line that does not parse still writes the JSON report it names, but never onto
+# another argument (which may be an input).
+"$CBD" check --source octa.off --target octa.off "${P[@]}" --snap-tolerance nan --json parse_err.json >/dev/null 2>&1; rc=$?
+[ "$rc" = 2 ] && python3 -c "import json,sys; j=json.load(open('parse_err.json')); sys.exit(not (j['status'] == 'invalid_argument' and 'snap-tolerance' in j['message']))" &&
+  ok "parse error: exit 2, the JSON report says why" || bad "parse error: exit $rc, report: $(cat parse_err.json 2>&1)"
+cp octa.off octa_keep.off
+"$CBD" check --source octa_keep.off --target octa.off --frobnicate --json octa_keep.off >/dev/null 2>&1
+cmp -s octa.off octa_keep.off && ok "parse error: no report onto an input" || bad "parse error: the report replaced an input"
 # An OFF file with a face more than its header counts is read as counted, with a warning.
 { cat octa.off; echo "3 0 2 4"; } > long.off
 expect long_off             ok                   -- --source long.off --target octa.off "${P[@]}"
