@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <map>
+#include <tuple>
 
 #include "cbd/anchor_sampling.h"
 #include "cbd/greedy_layout.h"
@@ -54,7 +55,7 @@ TEST(GreedyLayout, SphereToBumpyEllipsoid) {
   }
 }
 
-TEST(GreedyLayout, TorusWithSixAnchorsSucceedsOrFailsCleanly) {
+TEST(GreedyLayout, TorusWithSixAnchorsIsBelowHeawoodsBound) {
   const IndexedMesh s = fx::torus(2.0, 0.7, 60, 24);
   std::vector<int> sa;
   for (int k = 0; k < 6; ++k) {
@@ -62,8 +63,10 @@ TEST(GreedyLayout, TorusWithSixAnchorsSucceedsOrFailsCleanly) {
     sa.push_back(fx::nearestVertex(s, Vec3((2 + 0.7 * std::cos(v)) * std::cos(u), (2 + 0.7 * std::cos(v)) * std::sin(u), 0.7 * std::sin(v))));
   }
   const GreedyLayoutResult g = buildGreedyLayout(s, sa, s, sa);
-  RecordProperty("greedy_torus_status", errorCodeName(g.status.code));
-  expectValidOrTypedFailure(g, 0, 6);
+  EXPECT_EQ(g.status.code, ErrorCode::LayoutFailed);
+  EXPECT_NE(g.status.message.find("6 anchors on a surface of genus 1 need 18 layout edges, more than the 15 pairs"),
+            std::string::npos)
+      << g.status.message;
 }
 
 TEST(GreedyLayout, RejectsMismatchedAnchorCounts) {
@@ -75,14 +78,40 @@ TEST(GreedyLayout, RejectsMismatchedAnchorCounts) {
 // A completion path that is cut in, found inconsistent and taken out again leaves the faces it
 // split behind; the next attempt in the same region must see them as part of it (they once fell
 // outside the region labels: a read past their end, which AddressSanitizer reports). On this
-// genus-2 pair with 4 farthest-point anchors the greedy method undoes a completion path, then
-// ends in a typed failure.
+// genus-2 pair with 9 random anchors (the fewest a layout without double links can have there,
+// below) the greedy method undoes a completion path, then ends in a typed failure.
 TEST(GreedyLayout, CompletionAttemptsUndoneLeaveTheRegionWhole) {
   const stress::SyntheticPair pair = stress::makePair(2);
-  const std::vector<int> sa = stress::randomAnchors(pair.source, 4, 4001, true);
+  const std::vector<int> sa = stress::randomAnchors(pair.source, 9, 4009, false);
   std::vector<int> ta;
   for (int v : sa) ta.push_back(pair.targetOf[v]);
   const GreedyLayoutResult g = buildGreedyLayout(pair.source, sa, pair.target, ta);
   EXPECT_GT(g.completionRejected, 0);  // the case this test is about
-  expectValidOrTypedFailure(g, -2, 4);
+  expectValidOrTypedFailure(g, -2, 9);
+}
+
+// A layout that never links a pair twice has at most n(n-1)/2 edges and needs 3(n - chi): below
+// Heawood's bound (7 anchors on a torus, 9 on a genus-2 surface) the method fails at once, saying
+// how many anchors it needs, before any search.
+TEST(GreedyLayout, FewerAnchorsThanHeawoodsBoundFailAtOnce) {
+  for (const auto& [genus, anchors, needed] : {std::tuple{1, 6, 7}, std::tuple{2, 8, 9}, std::tuple{2, 4, 9}}) {
+    SCOPED_TRACE("genus " + std::to_string(genus) + ", " + std::to_string(anchors) + " anchors");
+    const stress::SyntheticPair pair = stress::makePair(genus);
+    const std::vector<int> sa = stress::randomAnchors(pair.source, anchors, 1, true);
+    std::vector<int> ta;
+    for (int v : sa) ta.push_back(pair.targetOf[v]);
+    const GreedyLayoutResult g = buildGreedyLayout(pair.source, sa, pair.target, ta);
+    EXPECT_EQ(g.status.code, ErrorCode::LayoutFailed);
+    EXPECT_NE(g.status.message.find("give at least " + std::to_string(needed) + " anchors"), std::string::npos)
+        << g.status.message;
+    EXPECT_EQ(g.candidateSeconds, 0.0);  // no search was run
+  }
+  // At the bound the method tries (and may succeed or fail, typed).
+  const stress::SyntheticPair torus = stress::makePair(1);
+  const std::vector<int> sa = stress::randomAnchors(torus.source, 7, 1, true);
+  std::vector<int> ta;
+  for (int v : sa) ta.push_back(torus.targetOf[v]);
+  const GreedyLayoutResult g = buildGreedyLayout(torus.source, sa, torus.target, ta);
+  EXPECT_EQ(g.status.message.find("give at least"), std::string::npos) << g.status.message;
+  expectValidOrTypedFailure(g, 0, 7);
 }

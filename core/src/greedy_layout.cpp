@@ -109,6 +109,23 @@ GreedyLayoutResult buildGreedyLayout(const IndexedMesh& S, const std::vector<int
   }
   const int chi = referenced - 3 * S.faceCount() / 2 + S.faceCount();
   const int targetEdges = 3 * (na - chi);  // E = 3(n - 2 + 2g)
+  // The method links a pair of anchors at most once, so a layout has at most n(n-1)/2 edges:
+  // with fewer anchors than that allows (Heawood's bound, n >= (7 + sqrt(1 + 48g)) / 2 for
+  // genus g >= 1) no trial can succeed; say so at once rather than after the all-pairs searches.
+  auto pairs = [](long long n) { return n * (n - 1) / 2; };
+  if (targetEdges > pairs(na)) {
+    int enough = na;
+    while (3LL * (enough - chi) > pairs(enough)) ++enough;
+    r.status = Status::error(ErrorCode::LayoutFailed,
+                             "greedy layout (Kraevoy & Sheffer): " + std::to_string(na) + " anchors on a surface of genus " +
+                                 std::to_string((2 - chi) / 2) + " need " + std::to_string(targetEdges) +
+                                 " layout edges, more than the " + std::to_string(pairs(na)) +
+                                 " pairs of anchors the method (which never links a pair twice) can link; give at least " +
+                                 std::to_string(enough) +
+                                 " anchors (Heawood's bound), or use the Voronoi method, which links a pair through "
+                                 "several cuts");
+    return r;
+  }
 
   // 1. All-pairs shortest paths on both meshes, over the whole surfaces.
   const double scale[2] = {std::sqrt(area(S)), std::sqrt(area(T))};
