@@ -654,7 +654,8 @@ int main(int argc, char** argv) {
   cmdMap->add_flag("--no-untangle", map.noUntangle,
                    "keep the composed map as it is: do not move the images of the vertices of flipped M_st / M_ts "
                    "triangles over the target (the default removes most flips, then polishes the map; see README)");
-  cmdMap->add_option("--morph", map.morph, "also write K meshes OUT/morph_000.ply ... blending the source (fitted onto the target by its anchors) into M_st")
+  cmdMap->add_option("--morph", map.morph, "also write K meshes OUT/morph_000.ply ... blending the source (fitted onto the target by its anchors) into M_st; "
+                     "later frames of an earlier, longer sequence in OUT are removed")
       ->check(CLI::Range(2, 1000));
 
   SampleArgs sample;
