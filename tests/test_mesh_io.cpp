@@ -67,15 +67,21 @@ TEST(MeshIO, OffRoundTripThroughPly) {
   EXPECT_EQ(toIndexed(m2).positions[5], toIndexed(m).positions[5]);
 }
 
-// M_st carries the target's per-vertex texture coordinates (interpolated at each image), and
-// mst.ply must keep them: written as texture_u/texture_v, read back as the same numbers.
 // Face index lists of every integer type, binary (both byte orders) and ASCII, with a vertex
-// colour and a face property after the list: the same mesh each time. vcglib 2020.09 misreads
-// several of these (ushort/short/uint counts, uchar/char/ushort indices: faces lost, or wrong
-// indices loaded silently); loadMesh hands it a copy with an `int int` list instead.
+// colour and a face property after the list: the same mesh each time, with 42 vertices (indices
+// fit every type) and 642 (indices past 255 and 127, for the types wider than a byte). vcglib
+// 2020.09 misreads many of these (ushort/short/uint counts, uchar/char/ushort indices: faces
+// lost, or wrong indices loaded silently); loadMesh hands it a copy with an `int int` list.
 TEST(MeshIO, FaceListsOfEveryIntegerTypeGiveTheSameMesh) {
   TempDir d;
-  const IndexedMesh sphere = fx::icosphere(1);  // 42 vertices: indices fit every type
+  auto temporaries = [] {
+    int n = 0;
+    for (const auto& e : fs::directory_iterator(fs::temp_directory_path()))
+      n += e.path().filename().string().rfind("cbd-ply-", 0) == 0;
+    return n;
+  };
+  const int temporariesBefore = temporaries();
+  int files = 0;
   const std::vector<std::pair<std::string, int>> types = {{"uchar", 1}, {"char", 1},   {"ushort", 2}, {"short", 2},
                                                           {"uint", 4},  {"int", 4},    {"uint8", 1},  {"int16", 2},
                                                           {"uint16", 2}, {"uint32", 4}, {"int32", 4}};
@@ -85,67 +91,70 @@ TEST(MeshIO, FaceListsOfEveryIntegerTypeGiveTheSameMesh) {
       out += byte;
     }
   };
-  int files = 0;
-  for (const std::string format : {"ascii", "binary_little_endian", "binary_big_endian"})
-    for (const auto& [countType, countSize] : types)
-      for (const auto& [indexType, indexSize] : types) {
-        const bool little = format == "binary_little_endian";
-        std::string ply = "ply\nformat " + format + " 1.0\ncomment list " + countType + " " + indexType +
-                          "\nelement vertex " + std::to_string(sphere.vertexCount()) +
-                          "\nproperty float x\nproperty float y\nproperty float z\nproperty uchar red\nproperty uchar "
-                          "green\nproperty uchar blue\nelement face " + std::to_string(sphere.faceCount()) +
-                          "\nproperty list " + countType + " " + indexType + " vertex_indices\nproperty float quality\n"
-                          "end_header\n";
-        for (int v = 0; v < sphere.vertexCount(); ++v) {
-          const Vec3& p = sphere.positions[v];
-          if (format == "ascii") {
-            ply += std::to_string(p.x()) + " " + std::to_string(p.y()) + " " + std::to_string(p.z()) + " 7 8 " +
-                   std::to_string(v) + "\n";
-            continue;
+  for (const int levels : {1, 3}) {
+    const IndexedMesh sphere = fx::icosphere(levels);
+    for (const std::string format : {"ascii", "binary_little_endian", "binary_big_endian"})
+      for (const auto& [countType, countSize] : types)
+        for (const auto& [indexType, indexSize] : types) {
+          if (sphere.vertexCount() > 127 && indexSize == 1) continue;
+          const bool little = format == "binary_little_endian";
+          std::string ply = "ply\nformat " + format + " 1.0\ncomment list " + countType + " " + indexType +
+                            "\nelement vertex " + std::to_string(sphere.vertexCount()) +
+                            "\nproperty float x\nproperty float y\nproperty float z\nproperty uchar red\nproperty uchar "
+                            "green\nproperty uchar blue\nelement face " + std::to_string(sphere.faceCount()) +
+                            "\nproperty list " + countType + " " + indexType + " vertex_indices\nproperty float quality\n"
+                            "end_header\n";
+          for (int v = 0; v < sphere.vertexCount(); ++v) {
+            const Vec3& p = sphere.positions[v];
+            if (format == "ascii") {
+              ply += std::to_string(p.x()) + " " + std::to_string(p.y()) + " " + std::to_string(p.z()) + " 7 8 " +
+                     std::to_string(v % 256) + "\n";
+              continue;
+            }
+            for (int k = 0; k < 3; ++k) {
+              const float c = static_cast<float>(std::stod(std::to_string(p[k])));
+              std::uint32_t bits;
+              std::memcpy(&bits, &c, 4);
+              encode(ply, bits, 4, little);
+            }
+            ply += '\x07', ply += '\x08', ply += static_cast<char>(v % 256);
           }
-          for (int k = 0; k < 3; ++k) {
-            const float c = static_cast<float>(std::stod(std::to_string(p[k])));
+          for (int f = 0; f < sphere.faceCount(); ++f) {
+            const auto& t = sphere.faces[f];
+            if (format == "ascii") {
+              ply += "3 " + std::to_string(t[0]) + " " + std::to_string(t[1]) + " " + std::to_string(t[2]) + " 0.5\n";
+              continue;
+            }
+            encode(ply, 3, countSize, little);
+            for (int k = 0; k < 3; ++k) encode(ply, t[k], indexSize, little);
+            const float q = 0.5f;
             std::uint32_t bits;
-            std::memcpy(&bits, &c, 4);
+            std::memcpy(&bits, &q, 4);
             encode(ply, bits, 4, little);
           }
-          ply += '\x07', ply += '\x08', ply += static_cast<char>(v);
-        }
-        for (int f = 0; f < sphere.faceCount(); ++f) {
-          const auto& t = sphere.faces[f];
-          if (format == "ascii") {
-            ply += "3 " + std::to_string(t[0]) + " " + std::to_string(t[1]) + " " + std::to_string(t[2]) + " 0.5\n";
-            continue;
+          const std::string name =
+              d.file(std::to_string(sphere.vertexCount()) + "_" + format + "_" + countType + "_" + indexType + ".ply");
+          std::ofstream(name, std::ios::binary) << ply;
+          Mesh m;
+          const LoadResult r = loadMesh(name, m);
+          ASSERT_TRUE(r.status.ok()) << name << ": " << r.status.message;
+          const IndexedMesh back = toIndexed(m);
+          ASSERT_EQ(back.faces, sphere.faces) << name;
+          ASSERT_EQ(back.vertexCount(), sphere.vertexCount()) << name;
+          for (int v = 0; v < sphere.vertexCount(); ++v) {
+            ASSERT_LT((back.positions[v] - sphere.positions[v]).norm(), 1e-5) << name << " vertex " << v;
+            ASSERT_EQ(m.vert[v].C(), vcg::Color4b(7, 8, static_cast<unsigned char>(v % 256), 255))
+                << name << " vertex " << v;
           }
-          encode(ply, 3, countSize, little);
-          for (int k = 0; k < 3; ++k) encode(ply, t[k], indexSize, little);
-          const float q = 0.5f;
-          std::uint32_t bits;
-          std::memcpy(&bits, &q, 4);
-          encode(ply, bits, 4, little);
+          ++files;
         }
-        const std::string name = d.file(format + "_" + countType + "_" + indexType + ".ply");
-        std::ofstream(name, std::ios::binary) << ply;
-        Mesh m;
-        const LoadResult r = loadMesh(name, m);
-        ASSERT_TRUE(r.status.ok()) << name << ": " << r.status.message;
-        const IndexedMesh back = toIndexed(m);
-        ASSERT_EQ(back.faces, sphere.faces) << name;
-        ASSERT_EQ(back.vertexCount(), sphere.vertexCount()) << name;
-        for (int v = 0; v < sphere.vertexCount(); ++v) {
-          ASSERT_LT((back.positions[v] - sphere.positions[v]).norm(), 1e-5) << name << " vertex " << v;
-          ASSERT_EQ(m.vert[v].C(), vcg::Color4b(7, 8, static_cast<unsigned char>(v), 255)) << name << " vertex " << v;
-        }
-        ++files;
-      }
-  EXPECT_EQ(files, 3 * 11 * 11);
-  // No temporary copy is left behind.
-  int left = 0;
-  for (const auto& e : fs::directory_iterator(fs::temp_directory_path()))
-    left += e.path().filename().string().rfind("cbd-ply-" + std::to_string(::getpid()) + "-", 0) == 0;
-  EXPECT_EQ(left, 0);
+  }
+  EXPECT_EQ(files, 3 * 11 * 11 + 3 * 11 * 8);  // 8 types wider than a byte for 642 vertices
+  EXPECT_EQ(temporaries(), temporariesBefore);  // no temporary copy left behind
 }
 
+// M_st carries the target's per-vertex texture coordinates (interpolated at each image), and
+// mst.ply must keep them: written as texture_u/texture_v, read back as the same numbers.
 TEST(MeshIO, TransferredTextureCoordinatesAreWrittenAndReadBack) {
   TempDir d;
   const IndexedMesh sphere = fx::icosphere(2);

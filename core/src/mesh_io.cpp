@@ -206,10 +206,40 @@ std::string readOff(const std::string& path, Mesh& mesh, int& mask, std::vector<
 // ASCII or binary. Returns an error text, empty when the file is safe to hand to vcglib.
 // vcglib 2020.09's PLY importer misreads many face index lists (ushort/short/uint counts,
 // uchar/char/ushort indices, an int count with short indices...: faces lost, or wrong indices
-// loaded without an error); the list MeshLab itself writes, uchar counts and int indices, it reads.
+// loaded without an error). These it reads, as MeshIO.FaceListsOfEveryIntegerTypeGiveTheSameMesh
+// checks (11 x 11 type pairs, ASCII and both byte orders): uchar / char counts with short, int
+// or uint indices (MeshLab writes uchar int, Blender uchar uint), and int counts with int indices.
 bool vcglibReadsFaceList(const std::string& countType, const std::string& indexType) {
-  return (countType == "uchar" || countType == "uint8") && (indexType == "int" || indexType == "int32");
+  const bool byteCount = countType == "uchar" || countType == "uint8" || countType == "char";
+  const bool intCount = countType == "int" || countType == "int32";
+  const bool intIndex = indexType == "int" || indexType == "int32";
+  const bool wideIndex = intIndex || indexType == "uint" || indexType == "uint32" || indexType == "short" ||
+                         indexType == "int16";
+  return (byteCount && wideIndex) || (intCount && intIndex);
 }
+
+// A temporary file in TMPDIR (else /tmp), created exclusively, removed with the object.
+struct TempFile {
+  std::string path;
+  bool write(const std::string& data) {
+    std::error_code ec;
+    const std::filesystem::path dir = std::filesystem::temp_directory_path(ec);
+    std::string name = (ec ? std::string("/tmp") : dir.string()) + "/cbd-ply-XXXXXX";
+    const int fd = ::mkstemp(name.data());
+    if (fd < 0) return false;
+    path = name;
+    size_t done = 0;
+    while (done < data.size()) {
+      const ssize_t n = ::write(fd, data.data() + done, data.size() - done);
+      if (n <= 0) break;
+      done += static_cast<size_t>(n);
+    }
+    return ::close(fd) == 0 && done == data.size();
+  }
+  ~TempFile() {
+    if (!path.empty()) ::unlink(path.c_str());
+  }
+};
 
 // Check a PLY file fully (vcglib trusts its counts and indices). When its face index list has
 // types vcglib misreads, `transcoded` receives the same file with that list as `int int`.
@@ -450,24 +480,17 @@ LoadResult loadMeshUnchecked(const std::string& path, Mesh& mesh) {
     if (what.empty() && transcoded.empty()) {
       err = io::ImporterPLY<Mesh>::Open(mesh, path.c_str(), mask);
     } else if (what.empty()) {
-      // The copy with a face list vcglib reads, through a temporary file (its importer reads files only).
-      const std::filesystem::path tmp = std::filesystem::temp_directory_path() /
-                                        ("cbd-ply-" + std::to_string(::getpid()) + "-" +
-                                         std::to_string(reinterpret_cast<std::uintptr_t>(&mesh)) + ".ply");
-      bool written = false;
-      {
-        std::ofstream out(tmp, std::ios::binary);
-        written = static_cast<bool>(out << transcoded) && out.flush().good();
-      }
-      if (written) err = io::ImporterPLY<Mesh>::Open(mesh, tmp.string().c_str(), mask);
-      std::error_code ignored;
-      std::filesystem::remove(tmp, ignored);
-      if (!written) {
+      // The copy with a face list vcglib reads, through a temporary file (its importer reads
+      // files only), created exclusively (mkstemp) and removed whatever happens.
+      TempFile tmp;
+      if (!tmp.write(transcoded)) {
         r.status = Status::error(ErrorCode::OutputError,
-                                 "cannot write '" + tmp.string() + "', the copy of '" + path +
-                                     "' with a face list vcglib reads (check that TMPDIR is a writable folder)");
+                                 "cannot write a temporary copy of '" + path + "' with a face list vcglib reads" +
+                                     (tmp.path.empty() ? std::string() : " ('" + tmp.path + "')") +
+                                     ": check that TMPDIR (or /tmp) is a writable folder");
         return r;
       }
+      err = io::ImporterPLY<Mesh>::Open(mesh, tmp.path.c_str(), mask);
     }
     if (err != 0 && io::ImporterPLY<Mesh>::ErrorCritical(err)) what = io::ImporterPLY<Mesh>::ErrorMsg(err);
   } else if (ext == ".off") {
