@@ -37,6 +37,8 @@ json meshJson(const cbd::MeshReport& m) {
 /// With `--json -`: the real standard output, kept for the report alone, while the human-readable
 /// log goes to standard error (so that stdout parses as JSON).
 int jsonStdout = -1;
+/// The output folder this run created (empty: none); a failed run removes it when it is still empty.
+std::string createdOutputFolder;
 
 bool writeJson(const std::string& path, const json& j) {
   if (path.empty()) return true;
@@ -70,32 +72,35 @@ bool writeJson(const std::string& path, const json& j) {
   return !ec;
 }
 
-/// Whether a new file can be created in `dir` (a probe file, removed at once): a permission
-/// check that holds for root, read-only mounts and pseudo file systems alike.
+/// Whether a new file can be created in `dir` (a probe file made by mkstemp, removed at once):
+/// a permission check that holds for root, read-only mounts and pseudo file systems alike.
 bool canCreateIn(const std::filesystem::path& dir) {
-  const std::filesystem::path probe = dir / (".cbd-probe-" + std::to_string(::getpid()));
-  if (!std::ofstream(probe)) return false;
-  std::error_code ignored;
-  std::filesystem::remove(probe, ignored);
+  std::string probe = (dir / ".cbd-probe-XXXXXX").string();
+  const int fd = ::mkstemp(probe.data());
+  if (fd < 0) return false;
+  ::close(fd);
+  ::unlink(probe.c_str());
   return true;
 }
 
 /// A command line that does not parse still gets its JSON report when it names one (`--json
 /// PATH`, `--json=PATH`, `-` for stdout), so that a script reading reports sees the error.
-/// Not when PATH is the same file as another argument: that may be an input.
+/// Since the options are not known, only onto a new file or an earlier JSON report (a file
+/// starting with '{'): never onto an input or another output.
 void writeParseErrorReport(int argc, char** argv, const std::string& message) {
   namespace fs = std::filesystem;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
     std::string path;
-    int valueAt = -1;
-    if (arg == "--json" && i + 1 < argc) path = argv[i + 1], valueAt = i + 1;
-    else if (arg.rfind("--json=", 0) == 0) path = arg.substr(7), valueAt = i;
+    if (arg == "--json" && i + 1 < argc) path = argv[i + 1];
+    else if (arg.rfind("--json=", 0) == 0) path = arg.substr(7);
     if (path.empty() || (path[0] == '-' && path != "-")) continue;
     std::error_code ec;
-    if (path != "-" && fs::exists(path, ec))
-      for (int k = 1; k < argc; ++k)
-        if (k != valueAt && fs::is_regular_file(argv[k], ec) && fs::equivalent(argv[k], path, ec)) return;
+    if (path != "-" && fs::exists(path, ec)) {
+      std::ifstream existing(path);
+      char first = 0;
+      if (!fs::is_regular_file(path, ec) || !(existing >> first) || first != '{') return;
+    }
     json j;
     j["status"] = cbd::errorCodeName(cbd::ErrorCode::InvalidArgument);
     j["message"] = message;
@@ -111,7 +116,9 @@ cbd::Status prepareOutputFolder(const std::string& outDir) {
   std::error_code ec;
   if (fs::exists(outDir, ec) && !fs::is_directory(outDir, ec))
     return cbd::Status::error(cbd::ErrorCode::OutputError, "output folder '" + outDir + "' is a file: choose another --out");
+  const bool existed = fs::exists(outDir, ec);
   fs::create_directories(outDir, ec);
+  if (!existed && fs::is_directory(outDir, ec)) createdOutputFolder = outDir;
   if (!fs::is_directory(outDir, ec))
     return cbd::Status::error(cbd::ErrorCode::OutputError,
                               "cannot create output folder '" + outDir + "'" + (ec ? " (" + ec.message() + ")" : "") +
@@ -140,13 +147,18 @@ cbd::Status checkReportPath(const std::string& jsonPath) {
 int finish(const cbd::Status& status, json& j, const std::string& jsonPath) {
   j["status"] = cbd::errorCodeName(status.code);
   j["message"] = status.message;
-  if (!writeJson(jsonPath, j)) {
+  const bool reported = writeJson(jsonPath, j);
+  // The run's own error first, also when the report cannot tell it.
+  if (!status.ok()) std::cerr << "cbd: error: " << cbd::errorCodeName(status.code) << ": " << status.message << "\n";
+  // A failed run leaves no empty output folder of its own making behind.
+  if (!status.ok() && !createdOutputFolder.empty()) {
+    std::error_code ec;
+    if (std::filesystem::is_empty(createdOutputFolder, ec) && !ec) std::filesystem::remove(createdOutputFolder, ec);
+  }
+  if (!reported) {
     std::cerr << "cbd: error: output_error: cannot write JSON report '" << jsonPath
               << "' (check that its folder exists and is writable, and that it does not name a folder)\n";
     return cbd::exitCode(cbd::ErrorCode::OutputError);
-  }
-  if (!status.ok()) {
-    std::cerr << "cbd: error: " << cbd::errorCodeName(status.code) << ": " << status.message << "\n";
   }
   return cbd::exitCode(status.code);
 }
@@ -679,8 +691,9 @@ int main(int argc, char** argv) {
       names += (names.empty() ? "" : ", ") + sub->get_name();
     }
     if (!known) {
-      std::cerr << "cbd: error: invalid_argument: unknown command '" << argv[1] << "': one of " << names
-                << " (see cbd --help)\n";
+      const std::string message = "unknown command '" + std::string(argv[1]) + "': one of " + names + " (see cbd --help)";
+      std::cerr << "cbd: error: invalid_argument: " << message << "\n";
+      writeParseErrorReport(argc, argv, message);
       return cbd::exitCode(cbd::ErrorCode::InvalidArgument);
     }
   }

@@ -171,6 +171,9 @@ expect too_many             too_many_anchors     -- --source octa.off --target o
 cp octa.off octa_keep.off
 "$CBD" check --source octa_keep.off --target octa.off --frobnicate --json octa_keep.off >/dev/null 2>&1
 cmp -s octa.off octa_keep.off && ok "parse error: no report onto an input" || bad "parse error: the report replaced an input"
+"$CBD" chek --json=unknown_cmd.json >/dev/null 2>&1; rc=$?
+[ "$rc" = 2 ] && grep -q "unknown command 'chek'" unknown_cmd.json && ok "unknown command: the JSON report says so" ||
+  bad "unknown command: exit $rc, report: $(cat unknown_cmd.json 2>&1)"
 # An OFF file with a face more than its header counts is read as counted, with a warning.
 { cat octa.off; echo "3 0 2 4"; } > long.off
 expect long_off             ok                   -- --source long.off --target octa.off "${P[@]}"
@@ -244,11 +247,15 @@ if [ -f "$MESHES/cow.off" ] && [ -f "$EXAMPLES/cow_picked_points.pp" ]; then
     --target "$MESHES/cow.off" --target-anchors "$EXAMPLES/cow_picked_points.pp" --out early_json \
     --json plain_file/r.json >early_json.out 2>early_json.err; rc=$?
   [ "$rc" = "$(code_of output_error)" ] && grep -q "cannot write JSON report 'plain_file/r.json'" early_json.err &&
-    [ ! -e early_json/mst.ply ] && ! grep -q "^map" early_json.out &&
+    [ ! -e early_json ] && ! grep -q "^map" early_json.out &&
     ok "map with --json under a plain file: exit $rc before computing" ||
     bad "map with --json under a plain file: exit $rc, $(ls early_json 2>&1) $(cat early_json.err)"
   "$CBD" layout --source "$MESHES/cow.off" --source-anchors "$EXAMPLES/cow_picked_points.pp" --out plain_file \
     --json out_is_file.json >/dev/null 2>out_is_file.err; rc=$?
+  "$CBD" layout --source "$MESHES/cow.off" --source-anchors "$EXAMPLES/cow_picked_points.pp" --out plain_file \
+    --json plain_file/r.json >/dev/null 2>out_is_file2.err
+  grep -q "output folder 'plain_file' is a file" out_is_file2.err ||
+    bad "layout --out onto a file, report inside it: the folder error is not told: $(cat out_is_file2.err)"
   [ "$rc" = "$(code_of output_error)" ] && grep -q "output folder 'plain_file' is a file" out_is_file.err &&
     grep -q '"status": "output_error"' out_is_file.json && [ ! -s plain_file ] &&
     ok "layout --out onto a file: exit $rc, the report says why" || bad "layout --out onto a file: exit $rc, $(cat out_is_file.err)"
