@@ -56,8 +56,8 @@ TEST(ValidateMesh, OpenBoundaryNamesAnEdge) {
 }
 
 // A closed surface whose faces do not share vertices (a triangle soup: some OBJ exporters) is
-// open everywhere; the advice is to merge vertices, not to close holes. With some of its vertices
-// merged it still is; a mesh with a real hole whose boundary touches no duplicate is not.
+// open everywhere; the advice is to merge vertices, not to close holes. A mesh with a real hole
+// whose boundary touches no duplicate is told to close it.
 TEST(ValidateMesh, AnUnweldedMeshIsToldToMergeVertices) {
   const IndexedMesh sphere = fx::icosphere(1);
   IndexedMesh soup;
