@@ -67,8 +67,9 @@ TEST(MeshIO, OffRoundTripThroughPly) {
   EXPECT_EQ(toIndexed(m2).positions[5], toIndexed(m).positions[5]);
 }
 
-// Face index lists of every integer type, binary (both byte orders) and ASCII, with a vertex
-// colour and a face property after the list: the same mesh each time, with 42 vertices (indices
+// Face index lists of every integer type, binary (both byte orders) and ASCII, with a double
+// coordinate, a vertex colour, a face property and a second face list (texture coordinates,
+// whose count has the same type: vcglib crashed on some): the same mesh each time, with 42 vertices (indices
 // fit every type) and 642 (indices past 255 and 127, for the types wider than a byte). vcglib
 // 2020.09 misreads many of these (ushort/short/uint counts, uchar/char/ushort indices: faces
 // lost, or wrong indices loaded silently); loadMesh hands it a copy with an `int int` list.
@@ -100,10 +101,10 @@ TEST(MeshIO, FaceListsOfEveryIntegerTypeGiveTheSameMesh) {
           const bool little = format == "binary_little_endian";
           std::string ply = "ply\nformat " + format + " 1.0\ncomment list " + countType + " " + indexType +
                             "\nelement vertex " + std::to_string(sphere.vertexCount()) +
-                            "\nproperty float x\nproperty float y\nproperty float z\nproperty uchar red\nproperty uchar "
+                            "\nproperty double x\nproperty float y\nproperty float z\nproperty uchar red\nproperty uchar "
                             "green\nproperty uchar blue\nelement face " + std::to_string(sphere.faceCount()) +
                             "\nproperty list " + countType + " " + indexType + " vertex_indices\nproperty float quality\n"
-                            "end_header\n";
+                            "property list " + countType + " float texcoord\nend_header\n";
           for (int v = 0; v < sphere.vertexCount(); ++v) {
             const Vec3& p = sphere.positions[v];
             if (format == "ascii") {
@@ -111,7 +112,11 @@ TEST(MeshIO, FaceListsOfEveryIntegerTypeGiveTheSameMesh) {
                      std::to_string(v % 256) + "\n";
               continue;
             }
-            for (int k = 0; k < 3; ++k) {
+            const double x = std::stod(std::to_string(p.x()));  // a double, the others floats
+            std::uint64_t xbits;
+            std::memcpy(&xbits, &x, 8);
+            encode(ply, static_cast<std::int64_t>(xbits), 8, little);
+            for (int k = 1; k < 3; ++k) {
               const float c = static_cast<float>(std::stod(std::to_string(p[k])));
               std::uint32_t bits;
               std::memcpy(&bits, &c, 4);
@@ -122,7 +127,8 @@ TEST(MeshIO, FaceListsOfEveryIntegerTypeGiveTheSameMesh) {
           for (int f = 0; f < sphere.faceCount(); ++f) {
             const auto& t = sphere.faces[f];
             if (format == "ascii") {
-              ply += "3 " + std::to_string(t[0]) + " " + std::to_string(t[1]) + " " + std::to_string(t[2]) + " 0.5\n";
+              ply += "3 " + std::to_string(t[0]) + " " + std::to_string(t[1]) + " " + std::to_string(t[2]) +
+                     " 0.5 6 0 0 1 0 0 1\n";
               continue;
             }
             encode(ply, 3, countSize, little);
@@ -131,6 +137,12 @@ TEST(MeshIO, FaceListsOfEveryIntegerTypeGiveTheSameMesh) {
             std::uint32_t bits;
             std::memcpy(&bits, &q, 4);
             encode(ply, bits, 4, little);
+            // A second face list (per-corner texture coordinates) of the same count type.
+            encode(ply, 6, countSize, little);
+            for (const float c : {0.f, 0.f, 1.f, 0.f, 0.f, 1.f}) {
+              std::memcpy(&bits, &c, 4);
+              encode(ply, bits, 4, little);
+            }
           }
           const std::string name =
               d.file(std::to_string(sphere.vertexCount()) + "_" + format + "_" + countType + "_" + indexType + ".ply");

@@ -242,7 +242,10 @@ struct TempFile {
 };
 
 // Check a PLY file fully (vcglib trusts its counts and indices). When its face index list has
-// types vcglib misreads, `transcoded` receives the same file with that list as `int int`.
+// types vcglib misreads, another list with a count wider than a byte (vcglib misreads those, or
+// crashes), or is big-endian binary (vcglib misreads big-endian doubles), `transcoded` receives
+// the same file, binary ones little-endian, with every list's count as uchar and the face index
+// list as `uchar int`.
 std::string checkPly(const std::string& path, std::string& transcoded) {
   transcoded.clear();
   std::ifstream in(path, std::ios::binary);
@@ -255,7 +258,9 @@ std::string checkPly(const std::string& path, std::string& transcoded) {
     int countSize = 0, itemSize = 0;  // bytes (binary); list count and item (or scalar) type
     bool countSigned = false, itemSigned = false, itemFloat = false;
     std::string name;
-    bool transcode = false;  // the face index list, re-encoded as int int
+    bool faceIndices = false;  // the face element's vertex index list
+    std::string itemType;       // of a list
+    size_t headerLine = 0;      // its line in `header`
   };
   struct Element {
     std::string name;
@@ -300,14 +305,14 @@ std::string checkPly(const std::string& path, std::string& transcoded) {
         std::string ct, it;
         ls >> ct >> it >> pr.name;
         pr.list = true;
+        pr.itemType = it;
+        pr.headerLine = header.size() - 1;
         pr.countSize = typeSize(ct, pr.countSigned, f);
         pr.itemSize = typeSize(it, pr.itemSigned, pr.itemFloat);
         if (!pr.countSize || f || !pr.itemSize) return "an unknown list type '" + ct + "'/'" + it + "'";
-        if (elements.back().name == "face" && (pr.name == "vertex_indices" || pr.name == "vertex_index") &&
-            !pr.itemFloat && !vcglibReadsFaceList(ct, it)) {
-          pr.transcode = transcode = true;
-          header.back() = "property list int int " + pr.name;
-        }
+        pr.faceIndices = elements.back().name == "face" && (pr.name == "vertex_indices" || pr.name == "vertex_index");
+        if (pr.faceIndices ? !pr.itemFloat && !vcglibReadsFaceList(ct, it) : ct != "uchar" && ct != "uint8")
+          transcode = true;
       } else {
         ls >> pr.name;
         pr.itemSize = typeSize(type, pr.itemSigned, pr.itemFloat);
@@ -330,9 +335,16 @@ std::string checkPly(const std::string& path, std::string& transcoded) {
   const bool ascii = format == "ascii";
   const bool little = format == "binary_little_endian";
   if (!ascii && !little && format != "binary_big_endian") return "an unknown format '" + format + "'";
-  // The transcoded copy: the header with the face list's types replaced; then the ASCII data
-  // as it is, or the binary data copied value by value (`copy`) with the list re-encoded.
+  // The transcoded copy: the header with the lists' types replaced (and little-endian); then the
+  // ASCII data as it is, or the binary data copied value by value (`copy`, little-endian) with the
+  // lists' counts and the face indices re-encoded.
+  if (format == "binary_big_endian") transcode = true;
   if (transcode) {
+    for (Element& e : elements)
+      for (Property& pr : e.props)
+        if (pr.list) header[pr.headerLine] = "property list uchar " + (pr.faceIndices ? std::string("int") : pr.itemType) + " " + pr.name;
+    for (std::string& h : header)
+      if (h.rfind("format ", 0) == 0 && !ascii) h = "format binary_little_endian 1.0";
     for (const std::string& h : header) transcoded += h + "\n";
     if (ascii) {
       std::ostringstream rest;
@@ -343,10 +355,8 @@ std::string checkPly(const std::string& path, std::string& transcoded) {
     }
   }
   bool copy = transcode && !ascii;
-  auto put = [&](std::int64_t value, int size) {
-    unsigned char b[4];
-    for (int k = 0; k < size; ++k) b[little ? k : size - 1 - k] = static_cast<unsigned char>(value >> (8 * k));
-    transcoded.append(reinterpret_cast<const char*>(b), size);
+  auto put = [&](std::int64_t value, int size) {  // little-endian
+    for (int k = 0; k < size; ++k) transcoded += static_cast<char>(static_cast<unsigned char>(value >> (8 * k)));
   };
   // Read one value of a property's type as a double (integers exact below 2^53).
   auto readValue = [&](int size, bool isSigned, bool isFloat, double& v) -> bool {
@@ -357,8 +367,8 @@ std::string checkPly(const std::string& path, std::string& transcoded) {
     }
     unsigned char b[8];
     if (!in.read(reinterpret_cast<char*>(b), size)) return false;
-    if (copy) transcoded.append(reinterpret_cast<const char*>(b), size);
     if (!little) std::reverse(b, b + size);
+    if (copy) transcoded.append(reinterpret_cast<const char*>(b), size);
     if (isFloat) {
       if (size == 4) { float x; std::memcpy(&x, b, 4); v = x; } else { double x; std::memcpy(&x, b, 8); v = x; }
     } else {
@@ -385,10 +395,13 @@ std::string checkPly(const std::string& path, std::string& transcoded) {
           continue;
         }
         double count = 0;
-        copy = transcode && !ascii && !pr.transcode;
+        const bool recode = transcode && !ascii;  // the count as uchar, face indices as int
+        copy = false;
         if (!readValue(pr.countSize, pr.countSigned, false, count)) return "the file ends inside element '" + e.name + "'";
-        if (count < 0 || count != std::floor(count) || count > 256) return "a list of " + std::to_string(count) + " items";
-        if (pr.transcode && !ascii) put(static_cast<std::int64_t>(count), 4);
+        if (count < 0 || count != std::floor(count) || count > (recode ? 255 : 256))
+          return "a list of " + std::to_string(count) + " items";
+        if (recode) put(static_cast<std::int64_t>(count), 1);
+        copy = recode && !pr.faceIndices;
         const bool indices = isFace && (pr.name == "vertex_indices" || pr.name == "vertex_index");
         if (indices && count < 3) return "face " + std::to_string(i) + " has fewer than 3 vertices";
         for (int k = 0; k < static_cast<int>(count); ++k) {
@@ -396,9 +409,9 @@ std::string checkPly(const std::string& path, std::string& transcoded) {
           if (indices && (v < 0 || v >= static_cast<double>(vertices) || v != std::floor(v)))
             return "face " + std::to_string(i) + " refers to vertex " + std::to_string(v) + " of " +
                    std::to_string(vertices);
-          if (pr.transcode && !ascii) put(static_cast<std::int64_t>(v), 4);
+          if (recode && pr.faceIndices) put(static_cast<std::int64_t>(v), 4);
         }
-        copy = transcode && !ascii;
+        copy = recode;
       }
   }
   return {};
