@@ -59,13 +59,14 @@ bool writeJson(const std::string& path, const json& j) {
   }
   namespace fs = std::filesystem;
   const fs::path target(path);
-  const fs::path tmp = target.parent_path() / ("." + target.filename().string() + ".tmp");
+  const fs::path tmp = cbd::writeTarget(path);
   {
     std::ofstream out(tmp);
     if (!out) return false;
     out << j.dump(2, ' ', false, json::error_handler_t::replace) << "\n";
     if (!out.good()) return false;
   }
+  if (tmp == target) return true;  // a device, written in place
   std::error_code ec, ignored;
   fs::rename(tmp, target, ec);  // fails onto a folder, which is reported as such
   if (ec) fs::remove(tmp, ignored);
@@ -136,6 +137,7 @@ cbd::Status checkReportPath(const std::string& jsonPath) {
   if (jsonPath.empty() || jsonPath == "-") return cbd::Status::success();
   std::error_code ec;
   const fs::path report(jsonPath);
+  if (cbd::writeTarget(jsonPath) == jsonPath) return cbd::Status::success();  // a device: written in place
   const fs::path folder = report.parent_path().empty() ? fs::path(".") : report.parent_path();
   if (fs::is_directory(report, ec) || !fs::is_directory(folder, ec) || !canCreateIn(folder))
     return cbd::Status::error(cbd::ErrorCode::OutputError,

@@ -243,10 +243,11 @@ Status writePickedPoints(const std::string& path, const std::vector<Anchor>& anc
   }
   namespace fs = std::filesystem;
   const fs::path target(path);
-  const fs::path tmp = target.parent_path() / ("." + target.filename().string() + ".tmp");
+  const fs::path tmp = writeTarget(path);
   if (!doc.save_file(tmp.c_str(), "    ")) {
     return Status::error(ErrorCode::OutputError, "cannot write '" + path + "' (check that the folder exists and is writable)");
   }
+  if (tmp == target) return Status::success();  // a device, written in place
   std::error_code ec;
   fs::rename(tmp, target, ec);
   if (ec) {

@@ -60,7 +60,7 @@ void buildMappedMesh(const Mesh& from, const std::vector<Vec3>& image, const std
 Status writeCorrespondence(const std::string& path, const std::vector<FacePoint>& points, const std::vector<Vec3>& image) {
   namespace fs = std::filesystem;
   const fs::path target(path);
-  const fs::path tmp = target.parent_path() / ("." + target.filename().string() + ".tmp");
+  const fs::path tmp = writeTarget(path);
   {
     std::ofstream out(tmp);
     if (!out) return Status::error(ErrorCode::OutputError, "cannot write '" + path + "'");
@@ -73,6 +73,7 @@ Status writeCorrespondence(const std::string& path, const std::vector<FacePoint>
     }
     if (!out.good()) return Status::error(ErrorCode::OutputError, "cannot write '" + path + "'");
   }
+  if (tmp == target) return Status::success();  // a device, written in place
   std::error_code ec;
   fs::rename(tmp, target, ec);
   if (ec) return Status::error(ErrorCode::OutputError, "cannot move the finished file into '" + path + "'");

@@ -604,7 +604,7 @@ Status savePly(const std::string& path, const Mesh& mesh, const SavePlyOptions& 
     return Status::error(ErrorCode::OutputError, "cannot write '" + path + "': folder '" +
                                                      dir.string() + "' does not exist");
   }
-  const fs::path tmp = dir / ("." + target.filename().string() + ".tmp");
+  const fs::path tmp = writeTarget(path);
   int err = 0;
   if (options.vertexTexCoord) {
     // vcglib 2020.09 declares per-vertex texture_u/texture_v as float but writes the mesh's
@@ -630,11 +630,12 @@ Status savePly(const std::string& path, const Mesh& mesh, const SavePlyOptions& 
     err = io::ExporterPLY<Mesh>::Save(const_cast<Mesh&>(mesh), tmp.string().c_str(), mask, options.binary);
   }
   if (err != 0) {
-    fs::remove(tmp, ec);
+    if (tmp != target) fs::remove(tmp, ec);
     return Status::error(ErrorCode::OutputError,
                          "cannot write '" + path + "': " + io::ExporterPLY<Mesh>::ErrorMsg(err) +
                              " (check that the folder is writable)");
   }
+  if (tmp == target) return Status::success();  // a device, written in place
   fs::rename(tmp, target, ec);
   if (ec) {
     fs::remove(tmp, ec);

@@ -82,6 +82,15 @@ int exitCode(ErrorCode code) {
   return 10 + static_cast<int>(code);
 }
 
+std::string writeTarget(const std::string& path) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  const fs::file_status st = fs::status(path, ec);
+  if (!ec && fs::exists(st) && !fs::is_regular_file(st) && !fs::is_directory(st)) return path;
+  const fs::path target(path);
+  return (target.parent_path() / ("." + target.filename().string() + ".tmp")).string();
+}
+
 std::string notAFileReason(const std::string& path) {
   namespace fs = std::filesystem;
   std::error_code ec;

@@ -163,6 +163,10 @@ expect too_many             too_many_anchors     -- --source octa.off --target o
 "$CBD" layout --source octa.off --source-anchors octa.txt -o e1_out --single-edge-node --min-edge-nodes 5 >/dev/null 2>e1b.err; rc=$?
 [ "$rc" = 2 ] && grep -q "excludes" e1b.err && [ ! -e e1_out ] &&
   ok "--single-edge-node with --min-edge-nodes: exit 2, $(cat e1b.err)" || bad "--single-edge-node with --min-edge-nodes: exit $rc, $(cat e1b.err)"
+# Reports and anchors onto a device are written in place: a rename over /dev/null would replace
+# it with a file (as root).
+"$CBD" check --source octa.off --target octa.off "${P[@]}" --json /dev/null >/dev/null 2>&1; rc=$?
+[ "$rc" = 0 ] && [ -c /dev/null ] && ok "--json /dev/null: exit 0, still a device" || bad "--json /dev/null: exit $rc, $(ls -l /dev/null)"
 # A command line that does not parse still writes the JSON report it names, but never onto
 # another argument (which may be an input).
 "$CBD" check --source octa.off --target octa.off "${P[@]}" --snap-tolerance nan --json parse_err.json >/dev/null 2>&1; rc=$?

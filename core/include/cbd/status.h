@@ -68,6 +68,12 @@ const ErrorCode* allErrorCodes(int& count);
 /// file (name a file in it)" or "is not a regular file (a device or pipe: give a file)".
 std::string notAFileReason(const std::string& path);
 
+/// Where a writer puts `path`'s contents so that no reader sees a half-written file: a temporary
+/// `.NAME.tmp` beside it, then renamed over it. But a device or pipe that exists at `path`
+/// (/dev/null, /dev/stdout) is returned itself, to be written in place: a rename would replace
+/// the device with a file (it did, for root, with `--json /dev/null`).
+std::string writeTarget(const std::string& path);
+
 /// Process exit code of the CLI for a code: 0 for Ok, 2 for invalid arguments,
 /// 10 + the enum value otherwise (distinct per class, documented in README).
 int exitCode(ErrorCode code);
