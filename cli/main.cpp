@@ -9,6 +9,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include <unistd.h>
 
@@ -37,8 +38,8 @@ json meshJson(const cbd::MeshReport& m) {
 /// With `--json -`: the real standard output, kept for the report alone, while the human-readable
 /// log goes to standard error (so that stdout parses as JSON).
 int jsonStdout = -1;
-/// The output folder this run created (empty: none); a failed run removes it when it is still empty.
-std::string createdOutputFolder;
+/// The output folders this run created, innermost first; a failed run removes those still empty.
+std::vector<std::filesystem::path> createdOutputFolders;
 
 bool writeJson(const std::string& path, const json& j) {
   if (path.empty()) return true;
@@ -86,8 +87,8 @@ bool canCreateIn(const std::filesystem::path& dir) {
 
 /// A command line that does not parse still gets its JSON report when it names one (`--json
 /// PATH`, `--json=PATH`, `-` for stdout), so that a script reading reports sees the error.
-/// Since the options are not known, only onto a new file or an earlier JSON report (a file
-/// starting with '{'): never onto an input or another output.
+/// Since the options are not known, only onto a new file, a device or an earlier report (a JSON
+/// object with a "status"): never onto an input or another output.
 void writeParseErrorReport(int argc, char** argv, const std::string& message) {
   namespace fs = std::filesystem;
   for (int i = 1; i < argc; ++i) {
@@ -97,10 +98,10 @@ void writeParseErrorReport(int argc, char** argv, const std::string& message) {
     else if (arg.rfind("--json=", 0) == 0) path = arg.substr(7);
     if (path.empty() || (path[0] == '-' && path != "-")) continue;
     std::error_code ec;
-    if (path != "-" && fs::exists(path, ec)) {
+    if (path != "-" && fs::exists(path, ec) && cbd::writeTarget(path) != path) {
       std::ifstream existing(path);
-      char first = 0;
-      if (!fs::is_regular_file(path, ec) || !(existing >> first) || first != '{') return;
+      const json earlier = json::parse(existing, nullptr, /*allow_exceptions=*/false);
+      if (!fs::is_regular_file(path, ec) || !earlier.is_object() || !earlier.contains("status")) return;
     }
     json j;
     j["status"] = cbd::errorCodeName(cbd::ErrorCode::InvalidArgument);
@@ -117,13 +118,20 @@ cbd::Status prepareOutputFolder(const std::string& outDir) {
   std::error_code ec;
   if (fs::exists(outDir, ec) && !fs::is_directory(outDir, ec))
     return cbd::Status::error(cbd::ErrorCode::OutputError, "output folder '" + outDir + "' is a file: choose another --out");
-  const bool existed = fs::exists(outDir, ec);
-  fs::create_directories(outDir, ec);
-  if (!existed && fs::is_directory(outDir, ec)) createdOutputFolder = outDir;
+  // The folders that do not exist yet, innermost first ("a/b/.." creates a and a/b).
+  std::vector<fs::path> missing;
+  for (fs::path p = fs::absolute(outDir, ec); !p.empty() && p != p.parent_path() && !fs::exists(p, ec);
+       p = p.parent_path()) {
+    const std::string name = p.filename().string();
+    if (!name.empty() && name != "." && name != "..") missing.push_back(p);
+  }
+  std::error_code created;
+  fs::create_directories(outDir, created);
   if (!fs::is_directory(outDir, ec))
     return cbd::Status::error(cbd::ErrorCode::OutputError,
-                              "cannot create output folder '" + outDir + "'" + (ec ? " (" + ec.message() + ")" : "") +
-                                  ": choose --out under a writable folder");
+                              "cannot create output folder '" + outDir + "'" +
+                                  (created ? " (" + created.message() + ")" : "") + ": choose --out under a writable folder");
+  createdOutputFolders = missing;
   if (!canCreateIn(outDir))
     return cbd::Status::error(cbd::ErrorCode::OutputError,
                               "cannot write into output folder '" + outDir + "': check its permissions, or choose another --out");
@@ -153,10 +161,11 @@ int finish(const cbd::Status& status, json& j, const std::string& jsonPath) {
   // The run's own error first, also when the report cannot tell it.
   if (!status.ok()) std::cerr << "cbd: error: " << cbd::errorCodeName(status.code) << ": " << status.message << "\n";
   // A failed run leaves no empty output folder of its own making behind.
-  if (!status.ok() && !createdOutputFolder.empty()) {
-    std::error_code ec;
-    if (std::filesystem::is_empty(createdOutputFolder, ec) && !ec) std::filesystem::remove(createdOutputFolder, ec);
-  }
+  if (!status.ok())
+    for (const std::filesystem::path& dir : createdOutputFolders) {
+      std::error_code ec;
+      if (!std::filesystem::is_empty(dir, ec) || ec || !std::filesystem::remove(dir, ec)) break;
+    }
   if (!reported) {
     std::cerr << "cbd: error: output_error: cannot write JSON report '" << jsonPath
               << "' (check that its folder exists and is writable, and that it does not name a folder)\n";
@@ -739,6 +748,10 @@ int main(int argc, char** argv) {
       if (*cmdMap) {
         for (const char* name : {cbd::kMstFile, cbd::kMtsFile, cbd::kCorrespondenceFile}) outputs.push_back((out / name).string());
         for (int k = 0; k < map.morph; ++k) outputs.push_back((out / cbd::morphFileName(k)).string());
+        // And the later frames of an earlier sequence, which writeMorph removes.
+        std::error_code ec;
+        for (int k = map.morph; map.morph > 0 && fs::exists(out / cbd::morphFileName(k), ec); ++k)
+          outputs.push_back((out / cbd::morphFileName(k)).string());
       }
     } else if (*cmdSample) {
       inputs = {sample.mesh};

@@ -175,6 +175,10 @@ expect too_many             too_many_anchors     -- --source octa.off --target o
 cp octa.off octa_keep.off
 "$CBD" check --source octa_keep.off --target octa.off --frobnicate --json octa_keep.off >/dev/null 2>&1
 cmp -s octa.off octa_keep.off && ok "parse error: no report onto an input" || bad "parse error: the report replaced an input"
+echo '{"name": "mine"}' > not_a_report.json
+"$CBD" check --source octa.off --frobnicate --json not_a_report.json >/dev/null 2>&1
+grep -q mine not_a_report.json && ok "parse error: no report onto a JSON file that is not one" ||
+  bad "parse error: a JSON file that is not a report was replaced"
 "$CBD" chek --json=unknown_cmd.json >/dev/null 2>&1; rc=$?
 [ "$rc" = 2 ] && grep -q "unknown command 'chek'" unknown_cmd.json && ok "unknown command: the JSON report says so" ||
   bad "unknown command: exit $rc, report: $(cat unknown_cmd.json 2>&1)"
@@ -248,7 +252,7 @@ if [ -f "$MESHES/cow.off" ] && [ -f "$EXAMPLES/cow_picked_points.pp" ]; then
   # a report under a plain file, an output folder that is a file.
   touch plain_file
   "$CBD" map --source "$MESHES/bull.off" --source-anchors "$EXAMPLES/bull_picked_points.pp" \
-    --target "$MESHES/cow.off" --target-anchors "$EXAMPLES/cow_picked_points.pp" --out early_json \
+    --target "$MESHES/cow.off" --target-anchors "$EXAMPLES/cow_picked_points.pp" --out early_json/a/b \
     --json plain_file/r.json >early_json.out 2>early_json.err; rc=$?
   [ "$rc" = "$(code_of output_error)" ] && grep -q "cannot write JSON report 'plain_file/r.json'" early_json.err &&
     [ ! -e early_json ] && ! grep -q "^map" early_json.out &&
@@ -333,6 +337,13 @@ PY
     ! cmp -s map_again/morph_001.ply map_voronoi/morph_001.ply &&
     ok "cbd map --morph 2 over --morph 3: $(grep removed morph2.out)" ||
     bad "cbd map --morph 2 over --morph 3: exit $rc, $(ls map_again) $(tail -2 morph2.out)"
+  # A frame the shorter sequence would remove is refused as an input (it would be deleted).
+  cp map_voronoi/morph_002.ply map_voronoi/morph_003.ply
+  "$CBD" map --source map_voronoi/morph_003.ply --source-anchors "$EXAMPLES/bull_picked_points.pp" \
+    --target "$MESHES/cow.off" --target-anchors "$EXAMPLES/cow_picked_points.pp" --out map_voronoi --morph 2 \
+    >/dev/null 2>stale_input.err; rc=$?
+  [ "$rc" = 2 ] && [ -s map_voronoi/morph_003.ply ] && grep -q "overwrite the input" stale_input.err &&
+    ok "a stale morph frame as input: refused, kept" || bad "a stale morph frame as input: exit $rc, $(cat stale_input.err)"
   # Per-vertex texture coordinates of the target carried onto mst.ply (and the source's onto
   # mts.ply): the pair as PLY with u, v a linear function of x, y; each image lies on the other
   # surface, so its interpolated u, v must be that function of its own position.
