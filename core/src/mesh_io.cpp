@@ -398,7 +398,7 @@ std::string checkPly(const std::string& path, std::string& transcoded) {
         const bool recode = transcode && !ascii;  // the count as uchar, face indices as int
         copy = false;
         if (!readValue(pr.countSize, pr.countSigned, false, count)) return "the file ends inside element '" + e.name + "'";
-        if (count < 0 || count != std::floor(count) || count > (recode ? 255 : 256))
+        if (count < 0 || count != std::floor(count) || count > (transcode ? 255 : 256))  // a uchar count in a copy
           return "a list of " + std::to_string(count) + " items";
         if (recode) put(static_cast<std::int64_t>(count), 1);
         copy = recode && !pr.faceIndices;
