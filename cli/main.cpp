@@ -749,9 +749,8 @@ int main(int argc, char** argv) {
         for (const char* name : {cbd::kMstFile, cbd::kMtsFile, cbd::kCorrespondenceFile}) outputs.push_back((out / name).string());
         for (int k = 0; k < map.morph; ++k) outputs.push_back((out / cbd::morphFileName(k)).string());
         // And the later frames of an earlier sequence, which writeMorph removes.
-        std::error_code ec;
-        for (int k = map.morph; map.morph > 0 && fs::exists(out / cbd::morphFileName(k), ec); ++k)
-          outputs.push_back((out / cbd::morphFileName(k)).string());
+        if (map.morph > 0)
+          for (const std::string& stale : cbd::staleMorphFrames(out.string(), map.morph)) outputs.push_back(stale);
       }
     } else if (*cmdSample) {
       inputs = {sample.mesh};

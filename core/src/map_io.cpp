@@ -86,6 +86,17 @@ std::string morphFileName(int k) {
   return name;
 }
 
+std::vector<std::string> staleMorphFrames(const std::string& dir, int count) {
+  std::vector<std::string> frames;
+  for (int k = std::max(count, 0);; ++k) {
+    const std::filesystem::path frame = std::filesystem::path(dir) / morphFileName(k);
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(frame, ec)) break;
+    frames.push_back(frame.string());
+  }
+  return frames;
+}
+
 Status writeMorph(const std::string& dir, const Mesh& from, const std::vector<Vec3>& image,
                   const std::vector<int>& anchors, int count, int* staleRemoved) {
   if (staleRemoved) *staleRemoved = 0;
@@ -112,12 +123,10 @@ Status writeMorph(const std::string& dir, const Mesh& from, const std::vector<Ve
     if (Status s = savePly((std::filesystem::path(dir) / morphFileName(k)).string(), m, opt); !s) return s;
   }
   // The rest of a longer sequence written there before: a mixed sequence would be misread.
-  for (int k = count;; ++k) {
-    const std::filesystem::path stale = std::filesystem::path(dir) / morphFileName(k);
+  for (const std::string& stale : staleMorphFrames(dir, count)) {
     std::error_code ec;
-    if (!std::filesystem::is_regular_file(stale, ec)) break;
     if (!std::filesystem::remove(stale, ec))
-      return Status::error(ErrorCode::OutputError, "cannot remove '" + stale.string() +
+      return Status::error(ErrorCode::OutputError, "cannot remove '" + stale +
                                                        "', a frame of an earlier, longer morph sequence");
     if (staleRemoved) ++*staleRemoved;
   }

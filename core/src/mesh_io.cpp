@@ -383,7 +383,6 @@ std::string checkPly(const std::string& path, std::string& transcoded) {
   const long long fileSize = static_cast<long long>(in.tellg());
   in.seekg(dataStart);
   for (const Element& e : elements) {
-    const bool isFace = e.name == "face";
     if (e.props.empty()) continue;  // nothing to read, whatever the count
     // Every instance takes at least one byte (binary) or one character (ASCII).
     if (e.count > fileSize) return "element '" + e.name + "' claims more items than the file has bytes";
@@ -402,11 +401,10 @@ std::string checkPly(const std::string& path, std::string& transcoded) {
           return "a list of " + std::to_string(count) + " items";
         if (recode) put(static_cast<std::int64_t>(count), 1);
         copy = recode && !pr.faceIndices;
-        const bool indices = isFace && (pr.name == "vertex_indices" || pr.name == "vertex_index");
-        if (indices && count < 3) return "face " + std::to_string(i) + " has fewer than 3 vertices";
+        if (pr.faceIndices && count < 3) return "face " + std::to_string(i) + " has fewer than 3 vertices";
         for (int k = 0; k < static_cast<int>(count); ++k) {
           if (!readValue(pr.itemSize, pr.itemSigned, pr.itemFloat, v)) return "the file ends inside element '" + e.name + "'";
-          if (indices && (v < 0 || v >= static_cast<double>(vertices) || v != std::floor(v)))
+          if (pr.faceIndices && (v < 0 || v >= static_cast<double>(vertices) || v != std::floor(v)))
             return "face " + std::to_string(i) + " refers to vertex " + std::to_string(v) + " of " +
                    std::to_string(vertices);
           if (recode && pr.faceIndices) put(static_cast<std::int64_t>(v), 4);

@@ -54,4 +54,8 @@ Status writeCorrespondence(const std::string& path, const std::vector<FacePoint>
 Status writeMorph(const std::string& dir, const Mesh& from, const std::vector<Vec3>& image,
                   const std::vector<int>& anchors, int count, int* staleRemoved = nullptr);
 
+/// The frames `count`, `count + 1`, ... of an earlier, longer morph sequence in `dir`: the
+/// regular files `morphFileName(k)` up to the first k without one. writeMorph removes them.
+std::vector<std::string> staleMorphFrames(const std::string& dir, int count);
+
 }  // namespace cbd
