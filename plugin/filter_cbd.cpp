@@ -224,7 +224,8 @@ std::string withLayerNames(std::string message, const MeshModel& source, const M
 std::string meshSummary(const cbd::MeshReport& r) {
   std::ostringstream s;
   s << r.vertices << " vertices, " << r.faces << " faces, genus " << r.genus;
-  if (r.unreferencedVertices > 0) s << ", " << r.unreferencedVertices << " unreferenced vertices ignored";
+  if (r.unreferencedVertices > 0)
+    s << ", " << r.unreferencedVertices << (r.unreferencedVertices == 1 ? " unreferenced vertex" : " unreferenced vertices") << " ignored";
   return s.str();
 }
 

@@ -26,6 +26,9 @@ struct UnionFind {
 
 std::string str(int v) { return std::to_string(v); }
 
+// "1 vertex", "3 vertices".
+std::string counted(int n, const char* one, const char* many) { return str(n) + " " + (n == 1 ? one : many); }
+
 Status fail(ErrorCode code, const std::string& name, const std::string& what, const std::string& fix) {
   return Status::error(code, name + " mesh: " + what + "; " + fix);
 }
@@ -45,7 +48,7 @@ MeshReport validateMesh(const IndexedMesh& mesh, const std::string& name, bool h
     return r;
   }
   if (nv == 0 || nf == 0) {
-    r.status = fail(ErrorCode::EmptyMesh, name, str(nv) + " vertices and " + str(nf) + " faces",
+    r.status = fail(ErrorCode::EmptyMesh, name, counted(nv, "vertex", "vertices") + " and " + counted(nf, "face", "faces"),
                     "a closed triangle surface is needed");
     return r;
   }
@@ -65,8 +68,9 @@ MeshReport validateMesh(const IndexedMesh& mesh, const std::string& name, bool h
   r.unreferencedVertices = nv - r.vertices;
   if (r.unreferencedVertices > 0) {
     int example = static_cast<int>(std::find(referenced.begin(), referenced.end(), 0) - referenced.begin());
-    r.warnings.push_back(name + " mesh: " + str(r.unreferencedVertices) +
-                         " unreferenced vertices ignored (e.g. vertex " + str(example) + ")");
+    r.warnings.push_back(name + " mesh: " +
+                         counted(r.unreferencedVertices, "unreferenced vertex", "unreferenced vertices") +
+                         " ignored (e.g. vertex " + str(example) + ")");
   }
 
   // Finite coordinates.
@@ -79,7 +83,7 @@ MeshReport validateMesh(const IndexedMesh& mesh, const std::string& name, bool h
       }
     if (bad) {
       r.status = fail(ErrorCode::InvalidCoordinates, name,
-                      str(bad) + " vertices with NaN or infinite coordinates (e.g. vertex " + str(example) + ")",
+                      counted(bad, "vertex", "vertices") + " with NaN or infinite coordinates (e.g. vertex " + str(example) + ")",
                       "repair or re-export the mesh");
       return r;
     }
@@ -110,7 +114,7 @@ MeshReport validateMesh(const IndexedMesh& mesh, const std::string& name, bool h
     if (bad) {
       const auto& t = mesh.faces[example];
       r.status = fail(ErrorCode::DegenerateFace, name,
-                      str(bad) + " degenerate (zero-area) faces (e.g. face " + str(example) + " on vertices " +
+                      counted(bad, "degenerate (zero-area) face", "degenerate (zero-area) faces") + " (e.g. face " + str(example) + " on vertices " +
                           str(t[0]) + ", " + str(t[1]) + ", " + str(t[2]) + ")",
                       "remove them first (MeshLab: Filters > Cleaning and Repairing > Remove Zero Area Faces)");
       return r;
@@ -134,7 +138,7 @@ MeshReport validateMesh(const IndexedMesh& mesh, const std::string& name, bool h
       }
     if (bad) {
       r.status = fail(ErrorCode::DuplicateFace, name,
-                      str(bad) + " duplicate faces (e.g. faces " + str(exA) + " and " + str(exB) +
+                      counted(bad, "duplicate face", "duplicate faces") + " (e.g. faces " + str(exA) + " and " + str(exB) +
                           " use the same three vertices)",
                       "remove them first (MeshLab: Filters > Cleaning and Repairing > Remove Duplicate Faces)");
       return r;
@@ -161,6 +165,7 @@ MeshReport validateMesh(const IndexedMesh& mesh, const std::string& name, bool h
     int boundary = 0, nonManifold = 0, flipped = 0;
     const HalfEdge *exBoundary = nullptr, *exNonManifold = nullptr, *exFlipped = nullptr;
     int edges = 0;
+    std::vector<char> onBoundary(nv, 0);  // for the unwelded-mesh advice below
     for (size_t i = 0; i < he.size();) {
       size_t j = i;
       while (j < he.size() && he[j].lo == he[i].lo && he[j].hi == he[i].hi) ++j;
@@ -169,6 +174,7 @@ MeshReport validateMesh(const IndexedMesh& mesh, const std::string& name, bool h
       if (count == 1) {
         ++boundary;
         if (!exBoundary) exBoundary = &he[i];
+        onBoundary[he[i].lo] = onBoundary[he[i].hi] = 1;
       } else if (count > 2) {
         ++nonManifold;
         if (!exNonManifold) exNonManifold = &he[i];
@@ -181,7 +187,7 @@ MeshReport validateMesh(const IndexedMesh& mesh, const std::string& name, bool h
     r.edges = edges;
     if (nonManifold) {
       r.status = fail(ErrorCode::NonManifoldEdge, name,
-                      str(nonManifold) + " non-manifold edges shared by more than two faces (e.g. edge " +
+                      counted(nonManifold, "non-manifold edge", "non-manifold edges") + " shared by more than two faces (e.g. edge " +
                           str(exNonManifold->lo) + "-" + str(exNonManifold->hi) + ")",
                       "repair it first (MeshLab: Filters > Cleaning and Repairing > Repair non Manifold Edges)");
       return r;
@@ -189,23 +195,14 @@ MeshReport validateMesh(const IndexedMesh& mesh, const std::string& name, bool h
     if (boundary) {
       // Boundary vertices at the very position of another vertex: an unwelded mesh (a triangle
       // soup, as some OBJ and STL exporters write), whose fix is merging vertices, not closing holes.
-      std::vector<char> onBoundary(mesh.vertexCount(), 0), used(mesh.vertexCount(), 0);
-      for (const auto& t : mesh.faces)
-        for (int v : t) used[v] = 1;
-      for (size_t i = 0; i < he.size();) {
-        size_t j = i;
-        while (j < he.size() && he[j].lo == he[i].lo && he[j].hi == he[i].hi) ++j;
-        if (j - i == 1) onBoundary[he[i].lo] = onBoundary[he[i].hi] = 1;
-        i = j;
-      }
       auto key = [&](int v) { return std::array<double, 3>{mesh.positions[v].x(), mesh.positions[v].y(), mesh.positions[v].z()}; };
       std::map<std::array<double, 3>, int> verticesAt;
       for (int v = 0; v < mesh.vertexCount(); ++v)
-        if (used[v]) ++verticesAt[key(v)];
+        if (referenced[v]) ++verticesAt[key(v)];
       int boundaryVertices = 0, unwelded = 0;
       for (int v = 0; v < mesh.vertexCount(); ++v)
         if (onBoundary[v]) ++boundaryVertices, unwelded += verticesAt[key(v)] > 1;
-      const std::string what = str(boundary) + " boundary edges: the surface is not closed (e.g. edge " +
+      const std::string what = counted(boundary, "boundary edge", "boundary edges") + ": the surface is not closed (e.g. edge " +
                                str(exBoundary->lo) + "-" + str(exBoundary->hi) + " of face " + str(exBoundary->face) + ")";
       if (2 * unwelded > boundaryVertices)
         r.status = fail(ErrorCode::OpenBoundary, name,
@@ -220,7 +217,7 @@ MeshReport validateMesh(const IndexedMesh& mesh, const std::string& name, bool h
     }
     if (flipped) {
       r.status = fail(ErrorCode::InconsistentOrientation, name,
-                      str(flipped) + " edges whose two faces are inconsistently oriented (e.g. edge " +
+                      counted(flipped, "edge", "edges") + " whose two faces are inconsistently oriented (e.g. edge " +
                           str(exFlipped->lo) + "-" + str(exFlipped->hi) + ")",
                       "re-orient the faces first (MeshLab: Filters > Normals, Curvatures and Orientation > Re-Orient all faces coherentely)");
       return r;
@@ -262,7 +259,7 @@ MeshReport validateMesh(const IndexedMesh& mesh, const std::string& name, bool h
     }
     if (bad) {
       r.status = fail(ErrorCode::NonManifoldVertex, name,
-                      str(bad) + " non-manifold vertices where several fans of faces meet (e.g. vertex " +
+                      counted(bad, "non-manifold vertex", "non-manifold vertices") + " where several fans of faces meet (e.g. vertex " +
                           str(example) + ")",
                       "split them first (MeshLab: Filters > Cleaning and Repairing > Split Vertices on Non Manifold Faces)");
       return r;
