@@ -580,6 +580,14 @@ int runSample(const SampleArgs& a) {
   cbd::LoadResult lr = cbd::loadMesh(a.mesh, mesh);
   if (!lr.status) return finish(lr.status, j, "");
   const cbd::IndexedMesh im = cbd::toIndexed(mesh);
+  // Anchors are for meshes `map` accepts; a NaN coordinate would be written as a "nan" anchor.
+  cbd::MeshReport rep = cbd::validateMesh(im, "the", lr.hadPolygons);
+  if (!rep.status) {
+    rep.status.message = "mesh '" + a.mesh + "'" + rep.status.message.substr(std::string("the mesh").size());
+    return finish(rep.status, j, "");
+  }
+  rep.warnings.insert(rep.warnings.end(), lr.warnings.begin(), lr.warnings.end());
+  for (const auto& w : rep.warnings) std::fprintf(stderr, "cbd: warning: %s\n", w.c_str());
   if (a.seed < 0 || a.seed >= im.vertexCount())
     return finish(cbd::Status::error(cbd::ErrorCode::InvalidArgument,
                                      "--seed " + std::to_string(a.seed) + " is not a vertex of '" + a.mesh + "' (0.." +
@@ -683,7 +691,9 @@ int main(int argc, char** argv) {
 
   SampleArgs sample;
   CLI::App* cmdSample = app.add_subcommand(
-      "sample-anchors", "Write N anchors spread by geodesic farthest-point sampling to a MeshLab .pp file.");
+      "sample-anchors",
+      "Write N anchors spread by geodesic farthest-point sampling to a MeshLab .pp file. The mesh must pass "
+      "the checks of `cbd check` (closed, manifold, finite coordinates...).");
   cmdSample->add_option("--mesh,-m", sample.mesh, "mesh (.ply, .off, .obj, .stl)")->required();
   cmdSample->add_option("--count,-n", sample.count, "number of anchors")->required()->check(CLI::Range(1, 100000));
   cmdSample->add_option("--seed", sample.seed, "index of the first vertex")->capture_default_str();

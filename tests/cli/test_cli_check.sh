@@ -127,6 +127,16 @@ expect truncated            malformed_mesh       -- --source trunc.off --target 
 expect quads                not_triangles        -- --source quads.off --target octa.off "${P[@]}"
 expect nan                  invalid_coordinates  -- --source octa.off --target nan.off "${P[@]}"
 expect open                 open_boundary        -- --source open.off --target octa.off "${P[@]}"
+# sample-anchors validates its mesh as check does: no "nan" anchors, no anchors on an open surface.
+for c in "nan.off invalid_coordinates 1 vertex with NaN" "open.off open_boundary 3 boundary edges"; do
+  set -- $c; m=$1; st=$2; shift 2; msg="$*"
+  rm -f "sample_$m.pp"; "$CBD" sample-anchors -m "$m" -n 3 -o "sample_$m.pp" >/dev/null 2>"sample_$m.err"; rc=$?
+  if [ "$rc" = "$(code_of "$st")" ] && [ ! -e "sample_$m.pp" ] && grep -q "mesh '$m': $msg" "sample_$m.err"; then
+    ok "sample-anchors on $m: exit $rc, $(cat "sample_$m.err")"
+  else
+    bad "sample-anchors on $m: exit $rc (want $st), $(cat "sample_$m.err")"
+  fi
+done
 expect nonmanifold_edge     non_manifold_edge    -- --source fan.off --target octa.off "${P[@]}"
 expect orientation          inconsistent_orientation -- --source flipped.off --target octa.off "${P[@]}"
 expect components           multiple_components  -- --source two.off --target octa.off "${P[@]}"
