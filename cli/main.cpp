@@ -1,6 +1,7 @@
 // cbd: command-line front end. Arguments -> options -> core -> files -> exit code.
 // Every failure is one line on stderr and a distinct exit code (see README, "Exit codes").
 
+#include <cctype>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -727,7 +728,16 @@ int main(int argc, char** argv) {
   } catch (const CLI::CallForVersion& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
-    const std::string message = std::string(e.what()) + " (see cbd --help)";
+    std::string message = std::string(e.what()) + " (see cbd --help)";
+    // CLI11 checks required options before unknown ones: a misspelt option would be reported
+    // as the required option it was meant to be.
+    if (dynamic_cast<const CLI::RequiredError*>(&e))
+      for (const CLI::App* sub : app.get_subcommands())
+        for (const std::string& extra : sub->remaining())
+          if (extra.size() > 1 && extra[0] == '-' && !std::isdigit(static_cast<unsigned char>(extra[1])) && extra[1] != '.') {
+            message = "unknown option '" + extra + "' of '" + sub->get_name() + "' (see cbd " + sub->get_name() + " --help)";
+            break;
+          }
     std::cerr << "cbd: error: invalid_argument: " << message << "\n";
     writeParseErrorReport(argc, argv, message);
     return cbd::exitCode(cbd::ErrorCode::InvalidArgument);

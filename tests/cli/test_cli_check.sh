@@ -167,6 +167,10 @@ expect too_many             too_many_anchors     -- --source octa.off --target o
 "$CBD" frobnicate >/dev/null 2>cmd.err; rc=$?
 [ "$rc" = 2 ] && grep -q "unknown command 'frobnicate': one of check, layout, map" cmd.err &&
   ok "unknown command: exit 2, $(cat cmd.err)" || bad "unknown command: exit $rc, $(cat cmd.err)"
+# A misspelt option among missing required ones is named (CLI11 names the first missing one).
+"$CBD" map --source octa.off --srouce-anchors octa.txt >/dev/null 2>misspelt.err; rc=$?
+[ "$rc" = 2 ] && grep -q "unknown option '--srouce-anchors' of 'map'" misspelt.err &&
+  ok "misspelt option: exit 2, $(cat misspelt.err)" || bad "misspelt option: exit $rc, $(cat misspelt.err)"
 "$CBD" check --source octa.off --target octa.off "${P[@]}" --snap-tolerance nan >/dev/null 2>nan_tol.err; rc=$?
 [ "$rc" = 2 ] && grep -q -- "--snap-tolerance: 'nan' is not a number in \[0, 1\]" nan_tol.err &&
   ok "--snap-tolerance nan: exit 2, $(cat nan_tol.err)" || bad "--snap-tolerance nan: exit $rc, $(cat nan_tol.err)"
