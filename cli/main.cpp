@@ -1,6 +1,7 @@
 // cbd: command-line front end. Arguments -> options -> core -> files -> exit code.
 // Every failure is one line on stderr and a distinct exit code (see README, "Exit codes").
 
+#include <algorithm>
 #include <cctype>
 #include <chrono>
 #include <cstdio>
@@ -380,12 +381,10 @@ int runSingleLayout(const RunArgs& a) {
   if (!lr.status) return finish(lr.status, j, a.jsonPath);
   const cbd::IndexedMesh source = cbd::toIndexed(mesh);
   cbd::MeshReport rep = cbd::validateMesh(source, "source", lr.hadPolygons);
+  cbd::nameMeshFile(rep, a.mesh);
   rep.warnings.insert(rep.warnings.end(), lr.warnings.begin(), lr.warnings.end());
   j["source"] = meshJson(rep);
-  if (!rep.status) {
-    rep.status.message = "source mesh '" + a.mesh + "'" + rep.status.message.substr(std::string("source mesh").size());
-    return finish(rep.status, j, a.jsonPath);
-  }
+  if (!rep.status) return finish(rep.status, j, a.jsonPath);
   for (const auto& w : rep.warnings) std::fprintf(stderr, "cbd: warning: %s\n", w.c_str());
   const cbd::AnchorSet set = cbd::readAnchors(a.anchors);
   if (!set.status) return finish(set.status, j, a.jsonPath);
@@ -582,17 +581,21 @@ int runSample(const SampleArgs& a) {
   if (!lr.status) return finish(lr.status, j, "");
   const cbd::IndexedMesh im = cbd::toIndexed(mesh);
   // Anchors are for meshes `map` accepts; a NaN coordinate would be written as a "nan" anchor.
-  cbd::MeshReport rep = cbd::validateMesh(im, "the", lr.hadPolygons);
-  if (!rep.status) {
-    rep.status.message = "mesh '" + a.mesh + "'" + rep.status.message.substr(std::string("the mesh").size());
-    return finish(rep.status, j, "");
-  }
+  cbd::MeshReport rep = cbd::validateMesh(im, "", lr.hadPolygons);
+  cbd::nameMeshFile(rep, a.mesh);
+  if (!rep.status) return finish(rep.status, j, "");
   rep.warnings.insert(rep.warnings.end(), lr.warnings.begin(), lr.warnings.end());
   for (const auto& w : rep.warnings) std::fprintf(stderr, "cbd: warning: %s\n", w.c_str());
   if (a.seed < 0 || a.seed >= im.vertexCount())
     return finish(cbd::Status::error(cbd::ErrorCode::InvalidArgument,
                                      "--seed " + std::to_string(a.seed) + " is not a vertex of '" + a.mesh + "' (0.." +
                                          std::to_string(im.vertexCount() - 1) + ")"),
+                  j, "");
+  // The sampling would start elsewhere, silently, from a vertex no face uses.
+  if (std::none_of(im.faces.begin(), im.faces.end(), [&](const auto& f) { return f[0] == a.seed || f[1] == a.seed || f[2] == a.seed; }))
+    return finish(cbd::Status::error(cbd::ErrorCode::InvalidArgument,
+                                     "--seed " + std::to_string(a.seed) + " is an unreferenced vertex of '" + a.mesh +
+                                         "' (no face uses it): choose a vertex of the surface"),
                   j, "");
   const std::vector<int> vs = cbd::farthestPointSampling(im, a.count, a.seed);
   if (static_cast<int>(vs.size()) < a.count)
@@ -606,7 +609,7 @@ int runSample(const SampleArgs& a) {
     anchors.push_back(an);
   }
   const cbd::Status s = cbd::writePickedPoints(a.out, anchors, std::filesystem::path(a.mesh).filename().string());
-  if (s) std::printf("wrote %zu anchors to %s\n", anchors.size(), a.out.c_str());
+  if (s) std::printf("wrote %s to %s\n", cbd::counted(static_cast<long long>(anchors.size()), "anchor", "anchors").c_str(), a.out.c_str());
   return finish(s, j, "");
 }
 
@@ -697,7 +700,7 @@ int main(int argc, char** argv) {
       "the checks of `cbd check` (closed, manifold, finite coordinates...).");
   cmdSample->add_option("--mesh,-m", sample.mesh, "mesh (.ply, .off, .obj, .stl)")->required();
   cmdSample->add_option("--count,-n", sample.count, "number of anchors")->required()->check(CLI::Range(1, 100000));
-  cmdSample->add_option("--seed", sample.seed, "index of the first vertex")->capture_default_str();
+  cmdSample->add_option("--seed", sample.seed, "index of the first vertex (one some face uses)")->capture_default_str();
   cmdSample->add_option("--out,-o", sample.out, "output .pp file")->required();
 
   CLI::App* cmdCodes = app.add_subcommand(

@@ -225,7 +225,7 @@ std::string meshSummary(const cbd::MeshReport& r) {
   std::ostringstream s;
   s << r.vertices << " vertices, " << r.faces << " faces, genus " << r.genus;
   if (r.unreferencedVertices > 0)
-    s << ", " << r.unreferencedVertices << (r.unreferencedVertices == 1 ? " unreferenced vertex" : " unreferenced vertices") << " ignored";
+    s << ", " << cbd::counted(r.unreferencedVertices, "unreferenced vertex", "unreferenced vertices") << " ignored";
   return s.str();
 }
 

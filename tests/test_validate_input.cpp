@@ -154,6 +154,24 @@ TEST(ValidateMesh, UnreferencedVerticesOnlyWarn) {
   EXPECT_NE(r.warnings[0].find("2 unreferenced"), std::string::npos);
 }
 
+// Front ends name the file: in the first problem and in every warning, and "mesh 'PATH'" for a
+// mesh validated without a role.
+TEST(ValidateMesh, NameMeshFileNamesTheFileInStatusAndWarnings) {
+  IndexedMesh m = fx::icosphere(1);
+  m.positions.push_back(Vec3(5, 5, 5));
+  MeshReport ok = validateMesh(m, "source");
+  nameMeshFile(ok, "dir/cow.off");
+  ASSERT_TRUE(ok.status.ok());
+  ASSERT_EQ(ok.warnings.size(), 1u);
+  EXPECT_EQ(ok.warnings[0].rfind("source mesh 'dir/cow.off': 1 unreferenced vertex ignored", 0), 0u) << ok.warnings[0];
+  m.positions[0] = Vec3(std::nan(""), 0, 0);
+  MeshReport bad = validateMesh(m, "");
+  nameMeshFile(bad, "x.off");
+  EXPECT_EQ(bad.status.code, ErrorCode::InvalidCoordinates);
+  EXPECT_EQ(bad.status.message.rfind("mesh 'x.off': 1 vertex with NaN", 0), 0u) << bad.status.message;
+  EXPECT_EQ(bad.warnings.at(0).rfind("mesh 'x.off': 1 unreferenced vertex", 0), 0u) << bad.warnings[0];
+}
+
 // --- validateInput: the pair and its anchors -------------------------------------------
 
 namespace {
@@ -199,6 +217,13 @@ TEST(ValidateInput, TooFewAnchors) {
   const IndexedMesh s = fx::icosphere(2);
   const InputReport r = validateInput(s, s, namedAt(s, {0, 1}, "s"), namedAt(s, {0, 1}, "t"));
   EXPECT_EQ(r.status.code, ErrorCode::TooFewAnchors);
+}
+
+TEST(ValidateInput, OneAnchorIsCountedInTheSingular) {
+  const IndexedMesh s = fx::icosphere(2);
+  const InputReport r = validateInput(s, s, namedAt(s, {0}, "s"), namedAt(s, {0}, "t"));
+  EXPECT_EQ(r.status.code, ErrorCode::TooFewAnchors);
+  EXPECT_EQ(r.status.message.rfind("1 corresponding anchor given; at least 3", 0), 0u) << r.status.message;
 }
 
 TEST(ValidateInput, NonFiniteSnapToleranceIsRefused) {

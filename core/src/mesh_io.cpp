@@ -190,7 +190,7 @@ std::string readOff(const std::string& path, Mesh& mesh, int& mask, std::vector<
   // Data past the last face: read as the header says (as MeshLab does), with a warning, since
   // the counts may be too low and faces left out (CGAL's prim.off lists one face more).
   if (next < lines.size())
-    warnings.push_back(std::to_string(lines.size() - next) + (lines.size() - next == 1 ? " line" : " lines") +
+    warnings.push_back(counted(static_cast<long long>(lines.size() - next), "line", "lines") +
                        " after the header's " + std::to_string(nv) +
                        " vertices and " + std::to_string(nf) + " faces were not read (if they are faces, correct "
                        "the counts line)");
@@ -577,8 +577,8 @@ LoadResult loadMeshUnchecked(const std::string& path, Mesh& mesh) {
   r.hasVertexTexCoord = (mask & io::Mask::IOM_VERTTEXCOORD) != 0;
   if (mesh.VN() == 0 || mesh.FN() == 0) {
     r.status = Status::error(ErrorCode::EmptyMesh,
-                             "mesh '" + path + "' has " + std::to_string(mesh.VN()) + " vertices and " +
-                                 std::to_string(mesh.FN()) + " faces: a closed triangle surface is needed");
+                             "mesh '" + path + "' has " + counted(mesh.VN(), "vertex", "vertices") + " and " +
+                                 counted(mesh.FN(), "face", "faces") + ": a closed triangle surface is needed");
     return r;
   }
   return r;

@@ -76,6 +76,10 @@ const ErrorCode* allErrorCodes(int& count) {
   return codes;
 }
 
+std::string counted(long long n, const char* one, const char* many) {
+  return std::to_string(n) + " " + (n == 1 ? one : many);
+}
+
 int exitCode(ErrorCode code) {
   if (code == ErrorCode::Ok) return 0;
   if (code == ErrorCode::InvalidArgument) return 2;

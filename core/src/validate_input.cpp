@@ -26,11 +26,11 @@ struct UnionFind {
 
 std::string str(int v) { return std::to_string(v); }
 
-// "1 vertex", "3 vertices".
-std::string counted(int n, const char* one, const char* many) { return str(n) + " " + (n == 1 ? one : many); }
+// How messages name a mesh: "source mesh", or "mesh" when it has no name.
+std::string meshLabel(const std::string& name) { return name.empty() ? "mesh" : name + " mesh"; }
 
 Status fail(ErrorCode code, const std::string& name, const std::string& what, const std::string& fix) {
-  return Status::error(code, name + " mesh: " + what + "; " + fix);
+  return Status::error(code, meshLabel(name) + ": " + what + "; " + fix);
 }
 
 }  // namespace
@@ -56,7 +56,7 @@ MeshReport validateMesh(const IndexedMesh& mesh, const std::string& name, bool h
   for (int f = 0; f < nf; ++f) {
     for (int v : mesh.faces[f]) {
       if (v < 0 || v >= nv) {
-        r.status = Status::error(ErrorCode::MalformedMesh, name + " mesh: face " + str(f) +
+        r.status = Status::error(ErrorCode::MalformedMesh, meshLabel(name) + ": face " + str(f) +
                                                                " refers to vertex " + str(v) +
                                                                " which does not exist");
         return r;
@@ -68,7 +68,7 @@ MeshReport validateMesh(const IndexedMesh& mesh, const std::string& name, bool h
   r.unreferencedVertices = nv - r.vertices;
   if (r.unreferencedVertices > 0) {
     int example = static_cast<int>(std::find(referenced.begin(), referenced.end(), 0) - referenced.begin());
-    r.warnings.push_back(name + " mesh: " +
+    r.warnings.push_back(meshLabel(name) + ": " +
                          counted(r.unreferencedVertices, "unreferenced vertex", "unreferenced vertices") +
                          " ignored (e.g. vertex " + str(example) + ")");
   }
@@ -319,8 +319,9 @@ InputReport validateInput(const IndexedMesh& source, const IndexedMesh& target,
   if (Status s = matchAnchors(sourceAnchors, targetAnchors, si, ti); !s) return r.status = s, r;
   if (si.size() < 3) {
     r.status = Status::error(ErrorCode::TooFewAnchors,
-                             std::to_string(si.size()) +
-                                 " corresponding anchors given; at least 3 are needed (more for a good map)");
+                             counted(static_cast<long long>(si.size()), "corresponding anchor given",
+                                     "corresponding anchors given") +
+                                 "; at least 3 are needed (more for a good map)");
     return r;
   }
   // Every anchor needs a vertex of its own (a layout can use every vertex as an anchor).
@@ -344,6 +345,15 @@ InputReport validateInput(const IndexedMesh& source, const IndexedMesh& target,
   return r;
 }
 
+void nameMeshFile(MeshReport& report, const std::string& path) {
+  const std::string label = meshLabel(report.name);
+  auto rename = [&](std::string& message) {
+    if (message.compare(0, label.size() + 1, label + ":") == 0) message.insert(label.size(), " '" + path + "'");
+  };
+  rename(report.status.message);
+  for (std::string& w : report.warnings) rename(w);
+}
+
 void loadAndValidate(const InputFiles& files, const ValidationOptions& options, LoadedInput& out) {
   out.report = InputReport{};
   out.source = IndexedMesh{};
@@ -358,12 +368,9 @@ void loadAndValidate(const InputFiles& files, const ValidationOptions& options, 
   const AnchorSet ta = readAnchors(files.targetAnchors);
   out.report = validateInput(out.source, out.target, sa, ta, options, out.sourceLoad.hadPolygons,
                              out.targetLoad.hadPolygons);
-  // Name the files rather than the roles where the message speaks of a mesh.
-  auto rename = [&](MeshReport& m, const std::string& path) {
-    if (!m.status) m.status.message = m.name + " mesh '" + path + "'" + m.status.message.substr(m.name.size() + 5);
-  };
-  rename(out.report.source, files.sourceMesh);
-  rename(out.report.target, files.targetMesh);
+  // Name the files, not only the roles.
+  nameMeshFile(out.report.source, files.sourceMesh);
+  nameMeshFile(out.report.target, files.targetMesh);
   // The loaders' warnings (they name the file).
   for (const auto& [load, m] : {std::pair{&out.sourceLoad, &out.report.source},
                                 std::pair{&out.targetLoad, &out.report.target}})

@@ -137,6 +137,32 @@ for c in "nan.off invalid_coordinates 1 vertex with NaN" "open.off open_boundary
     bad "sample-anchors on $m: exit $rc (want $st), $(cat "sample_$m.err")"
   fi
 done
+# A vertex no face uses: the warnings name the file (check, layout, sample-anchors), and
+# sample-anchors refuses it as --seed rather than start elsewhere.
+sed 's/^6 8 0$/7 8 0/; s/^0 0 -1$/0 0 -1\n3 3 3/' octa.off > unref.off
+"$CBD" check --source unref.off --target octa.off "${P[@]}" >unref_check.out 2>&1; rc=$?
+[ "$rc" = 0 ] && grep -q "source mesh 'unref.off': 1 unreferenced vertex ignored (e.g. vertex 6)" unref_check.out &&
+  ok "unreferenced vertex: check names the file, $(grep unreferenced unref_check.out)" || bad "unreferenced vertex: check exit $rc, $(cat unref_check.out)"
+"$CBD" layout --source unref.off --source-anchors octa.txt -o unref_layout >/dev/null 2>unref_layout.err; rc=$?
+[ "$rc" = 0 ] && grep -q "warning: source mesh 'unref.off': 1 unreferenced vertex ignored" unref_layout.err &&
+  ok "unreferenced vertex: layout names the file" || bad "unreferenced vertex: layout exit $rc, $(cat unref_layout.err)"
+"$CBD" sample-anchors -m unref.off -n 3 -o unref.pp >unref_sample.out 2>unref_sample.err; rc=$?
+[ "$rc" = 0 ] && grep -q "warning: mesh 'unref.off': 1 unreferenced vertex ignored" unref_sample.err &&
+  grep -q "wrote 3 anchors" unref_sample.out && ok "unreferenced vertex: sample-anchors names the file" ||
+  bad "unreferenced vertex: sample-anchors exit $rc, $(cat unref_sample.out unref_sample.err)"
+"$CBD" sample-anchors -m unref.off -n 1 -o one.pp >one.out 2>&1; rc=$?
+[ "$rc" = 0 ] && grep -q "wrote 1 anchor to one.pp" one.out && ok "sample-anchors -n 1: $(cat one.out)" || bad "sample-anchors -n 1: exit $rc, $(cat one.out)"
+rm -f unref_seed.pp; "$CBD" sample-anchors -m unref.off -n 3 --seed 6 -o unref_seed.pp >/dev/null 2>unref_seed.err; rc=$?
+[ "$rc" = 2 ] && [ ! -e unref_seed.pp ] && grep -q -- "--seed 6 is an unreferenced vertex of 'unref.off'" unref_seed.err &&
+  ok "sample-anchors --seed on an unreferenced vertex: exit 2, $(cat unref_seed.err)" ||
+  bad "sample-anchors --seed on an unreferenced vertex: exit $rc, $(cat unref_seed.err)"
+printf 'xp 1 0 0\n' > octa1.txt
+"$CBD" check --source octa.off --target octa.off --source-anchors octa1.txt --target-anchors octa1.txt >/dev/null 2>one_anchor.err
+grep -q "1 corresponding anchor given" one_anchor.err && ok "one anchor: counted in the singular" || bad "one anchor: $(cat one_anchor.err)"
+printf 'OFF\n1 0 0\n0 0 0\n' > point.off
+"$CBD" check --source point.off --target octa.off "${P[@]}" >/dev/null 2>point.err; rc=$?
+[ "$rc" = "$(code_of empty_mesh)" ] && grep -q "mesh 'point.off' has 1 vertex and 0 faces" point.err &&
+  ok "one vertex, no face: exit $rc, $(cat point.err)" || bad "one vertex, no face: exit $rc, $(cat point.err)"
 expect nonmanifold_edge     non_manifold_edge    -- --source fan.off --target octa.off "${P[@]}"
 expect orientation          inconsistent_orientation -- --source flipped.off --target octa.off "${P[@]}"
 expect components           multiple_components  -- --source two.off --target octa.off "${P[@]}"

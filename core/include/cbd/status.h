@@ -74,6 +74,10 @@ std::string notAFileReason(const std::string& path);
 /// the device with a file (it did, for root, with `--json /dev/null`).
 std::string writeTarget(const std::string& path);
 
+/// A count with its noun in the singular for one, for messages: counted(1, "vertex", "vertices")
+/// is "1 vertex", counted(3, ...) "3 vertices".
+std::string counted(long long n, const char* one, const char* many);
+
 /// Process exit code of the CLI for a code: 0 for Ok, 2 for invalid arguments,
 /// 10 + the enum value otherwise (distinct per class, documented in README).
 int exitCode(ErrorCode code);

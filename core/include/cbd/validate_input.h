@@ -40,10 +40,15 @@ struct MeshReport {
 /// exactly two faces (else OpenBoundary / NonManifoldEdge), traversed in opposite directions
 /// (else InconsistentOrientation); one fan of faces around every vertex (NonManifoldVertex);
 /// one connected component (MultipleComponents). Unreferenced vertices only warn. Every
-/// message names the mesh, the count and an example element (0-based indices as in the file).
+/// message names the mesh ("<name> mesh: ...", or "mesh: ..." for an empty name), the count and
+/// an example element (0-based indices as in the file).
 /// @param[in] hadPolygons from LoadResult: reported as NotTriangles.
 MeshReport validateMesh(const IndexedMesh& mesh, const std::string& name, bool hadPolygons = false,
                         const ValidationOptions& options = {});
+
+/// Add the file to the mesh named in `report`'s status message and warnings, for front ends that
+/// loaded it from `path`: "source mesh: ..." becomes "source mesh 'cow.off': ...".
+void nameMeshFile(MeshReport& report, const std::string& path);
 
 /// Everything `validateInput` checked: both meshes and the matched anchors.
 struct InputReport {
