@@ -90,9 +90,13 @@ bool canCreateIn(const std::filesystem::path& dir) {
 /// A command line that does not parse still gets its JSON report when it names one (`--json
 /// PATH`, `--json=PATH`, `-` for stdout), so that a script reading reports sees the error.
 /// Since the options are not known, only onto a new file, a device or an earlier report (a JSON
-/// object with a "status"): never onto an input or another output.
-void writeParseErrorReport(int argc, char** argv, const std::string& message) {
+/// object with a "status"): never onto an input or another output. Nor for a command without
+/// a --json option (sample-anchors), where "--json" is itself the error.
+void writeParseErrorReport(CLI::App& app, int argc, char** argv, const std::string& message) {
   namespace fs = std::filesystem;
+  if (argc >= 2)
+    for (const CLI::App* sub : app.get_subcommands([](CLI::App*) { return true; }))
+      if (sub->get_name() == argv[1] && !sub->get_option_no_throw("--json")) return;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
     std::string path;
@@ -718,7 +722,7 @@ int main(int argc, char** argv) {
     if (!known) {
       const std::string message = "unknown command '" + std::string(argv[1]) + "': one of " + names + " (see cbd --help)";
       std::cerr << "cbd: error: invalid_argument: " << message << "\n";
-      writeParseErrorReport(argc, argv, message);
+      writeParseErrorReport(app, argc, argv, message);
       return cbd::exitCode(cbd::ErrorCode::InvalidArgument);
     }
   }
@@ -731,18 +735,23 @@ int main(int argc, char** argv) {
   } catch (const CLI::CallForVersion& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
+    // CLI11 checks required options, and options that need one another, before unknown ones: a
+    // misspelt option would be reported as the option it was meant to be, or as an "argument
+    // not expected". Whatever the error, an unknown option is named first, by its command.
     std::string message = std::string(e.what()) + " (see cbd --help)";
-    // CLI11 checks required options before unknown ones: a misspelt option would be reported
-    // as the required option it was meant to be.
-    if (dynamic_cast<const CLI::RequiredError*>(&e))
-      for (const CLI::App* sub : app.get_subcommands())
-        for (const std::string& extra : sub->remaining())
-          if (extra.size() > 1 && extra[0] == '-' && !std::isdigit(static_cast<unsigned char>(extra[1])) && extra[1] != '.') {
-            message = "unknown option '" + extra + "' of '" + sub->get_name() + "' (see cbd " + sub->get_name() + " --help)";
-            break;
-          }
+    std::vector<std::pair<const CLI::App*, std::string>> extras;
+    for (const std::string& extra : app.remaining()) extras.emplace_back(nullptr, extra);
+    for (const CLI::App* sub : app.get_subcommands())
+      for (const std::string& extra : sub->remaining()) extras.emplace_back(sub, extra);
+    for (const auto& [sub, extra] : extras)
+      if (extra.size() > 1 && extra[0] == '-' && !std::isdigit(static_cast<unsigned char>(extra[1])) && extra[1] != '.') {
+        const std::string option = extra.substr(0, extra.find('='));
+        message = sub ? "unknown option '" + option + "' of '" + sub->get_name() + "' (see cbd " + sub->get_name() + " --help)"
+                      : "unknown option '" + option + "' (options go after the command; see cbd --help)";
+        break;
+      }
     std::cerr << "cbd: error: invalid_argument: " << message << "\n";
-    writeParseErrorReport(argc, argv, message);
+    writeParseErrorReport(app, argc, argv, message);
     return cbd::exitCode(cbd::ErrorCode::InvalidArgument);
   }
 

@@ -197,6 +197,20 @@ expect too_many             too_many_anchors     -- --source octa.off --target o
 "$CBD" map --source octa.off --srouce-anchors octa.txt >/dev/null 2>misspelt.err; rc=$?
 [ "$rc" = 2 ] && grep -q "unknown option '--srouce-anchors' of 'map'" misspelt.err &&
   ok "misspelt option: exit 2, $(cat misspelt.err)" || bad "misspelt option: exit $rc, $(cat misspelt.err)"
+# ... whatever CLI11 would have said first: options that need one another, an option with its
+# value after '=', an option before the command.
+for c in "layout|--taget-anchors|layout --source octa.off --target octa.off --taget-anchors octa.txt" \
+         "map|--bogus|map --bogus=x --json -" "|--bogus|--bogus map" "check|--frobnicate|check --source octa.off --frobnicate"; do
+  IFS='|' read -r cmd opt line <<<"$c"
+  "$CBD" $line >/dev/null 2>unknown_opt.err; rc=$?
+  if [ -n "$cmd" ]; then want="unknown option '$opt' of '$cmd'"; else want="unknown option '$opt' (options go after the command"; fi
+  [ "$rc" = 2 ] && grep -qF "$want" unknown_opt.err && ok "cbd $line: exit 2, $(cat unknown_opt.err)" ||
+    bad "cbd $line: exit $rc, $(cat unknown_opt.err)"
+done
+# sample-anchors has no --json: naming one is the error, and no report is written.
+rm -f sample_report.json; "$CBD" sample-anchors -m octa.off -n 3 -o s.pp --json sample_report.json >/dev/null 2>sample_json.err; rc=$?
+[ "$rc" = 2 ] && [ ! -e sample_report.json ] && [ ! -e s.pp ] && grep -q "unknown option '--json' of 'sample-anchors'" sample_json.err &&
+  ok "sample-anchors --json: exit 2, no report" || bad "sample-anchors --json: exit $rc, $(ls sample_report.json 2>&1), $(cat sample_json.err)"
 "$CBD" check --source octa.off --target octa.off "${P[@]}" --snap-tolerance nan >/dev/null 2>nan_tol.err; rc=$?
 [ "$rc" = 2 ] && grep -q -- "--snap-tolerance: 'nan' is not a number in \[0, 1\]" nan_tol.err &&
   ok "--snap-tolerance nan: exit 2, $(cat nan_tol.err)" || bad "--snap-tolerance nan: exit $rc, $(cat nan_tol.err)"
