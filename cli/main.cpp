@@ -739,10 +739,17 @@ int main(int argc, char** argv) {
     // misspelt option would be reported as the option it was meant to be, or as an "argument
     // not expected". Whatever the error, an unknown option is named first, by its command.
     std::string message = std::string(e.what()) + " (see cbd --help)";
-    std::vector<std::pair<const CLI::App*, std::string>> extras;
-    for (const std::string& extra : app.remaining()) extras.emplace_back(nullptr, extra);
+    // Only words before a "--" can be options, and the app's own only before the command.
+    const int end = static_cast<int>(std::find(argv + 1, argv + argc, std::string("--")) - argv);
+    int command = end;
     for (const CLI::App* sub : app.get_subcommands())
-      for (const std::string& extra : sub->remaining()) extras.emplace_back(sub, extra);
+      command = std::min(command, static_cast<int>(std::find(argv + 1, argv + end, sub->get_name()) - argv));
+    std::vector<std::pair<const CLI::App*, std::string>> extras;
+    for (const std::string& extra : app.remaining())
+      if (std::find(argv + 1, argv + command, extra) != argv + command) extras.emplace_back(nullptr, extra);
+    for (const CLI::App* sub : app.get_subcommands())
+      for (const std::string& extra : sub->remaining())
+        if (std::find(argv + 1, argv + end, extra) != argv + end) extras.emplace_back(sub, extra);
     for (const auto& [sub, extra] : extras)
       if (extra.size() > 1 && extra[0] == '-' && !std::isdigit(static_cast<unsigned char>(extra[1])) && extra[1] != '.') {
         const std::string option = extra.substr(0, extra.find('='));

@@ -207,6 +207,10 @@ for c in "layout|--taget-anchors|layout --source octa.off --target octa.off --ta
   [ "$rc" = 2 ] && grep -qF "$want" unknown_opt.err && ok "cbd $line: exit 2, $(cat unknown_opt.err)" ||
     bad "cbd $line: exit $rc, $(cat unknown_opt.err)"
 done
+# After "--" a word is no option: CLI11's own message stands.
+"$CBD" map --source octa.off -- --bogus >/dev/null 2>dashdash.err; rc=$?
+[ "$rc" = 2 ] && ! grep -q "unknown option" dashdash.err && grep -q "is required" dashdash.err &&
+  ok "a word after --: exit 2, $(cat dashdash.err)" || bad "a word after --: exit $rc, $(cat dashdash.err)"
 # sample-anchors has no --json: naming one is the error, and no report is written.
 rm -f sample_report.json; "$CBD" sample-anchors -m octa.off -n 3 -o s.pp --json sample_report.json >/dev/null 2>sample_json.err; rc=$?
 [ "$rc" = 2 ] && [ ! -e sample_report.json ] && [ ! -e s.pp ] && grep -q "unknown option '--json' of 'sample-anchors'" sample_json.err &&
