@@ -1,6 +1,8 @@
 // Loading PLY/OFF/COFF/OBJ/STL through vcglib and writing PLY with colour and quality.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cstdio>
 #include <filesystem>
 #include <cmath>
 #include <cstdint>
@@ -264,6 +266,75 @@ TEST(MeshIO, ObjAndStl) {
   ASSERT_TRUE(r.status.ok()) << r.status.message;
   EXPECT_EQ(s.FN(), 4);
   EXPECT_EQ(s.VN(), 4);  // the triangle soup is welded
+}
+
+// An STL soup is welded by exact coordinates: vertex i is the file's i-th distinct corner (so
+// anchors given as vertex indices mean the same vertex on every run), and corners at one NaN
+// point weld too, so validation counts the bad vertex once, in ASCII and binary files alike.
+TEST(MeshIO, StlWeldKeepsFileOrderAndWeldsNaNCorners) {
+  TempDir d;
+  const IndexedMesh tet = fx::tetrahedron();
+  for (const bool nanCorner : {false, true}) {
+    std::vector<Vec3> p = tet.positions;
+    if (nanCorner) p[3].y() = std::nan("");
+    p[1].z() = 0.0;  // written as -0 at every other appearance: -0 and +0 are one coordinate
+    int appearances = 0;
+    std::string ascii = "solid t\n", bin(80, ' ');
+    const std::uint32_t nf = static_cast<std::uint32_t>(tet.faces.size());
+    bin.append(reinterpret_cast<const char*>(&nf), 4);
+    for (const auto& f : tet.faces) {
+      ascii += "facet normal 0 0 0\nouter loop\n";
+      bin.append(12, '\0');
+      for (int v : f) {
+        ascii += "vertex";
+        const bool negativeZero = v == 1 && appearances++ % 2 == 1;
+        for (int c = 0; c < 3; ++c) {
+          const double value = negativeZero && c == 2 ? -0.0 : p[v][c];
+          char num[64];
+          std::snprintf(num, sizeof num, " %.17g", value);
+          ascii += num;
+          const float x = static_cast<float>(value);
+          bin.append(reinterpret_cast<const char*>(&x), 4);
+        }
+        ascii += "\n";
+      }
+      ascii += "endloop\nendfacet\n";
+      bin.append(2, '\0');
+    }
+    ascii += "endsolid t\n";
+    write(d.file("a.stl"), ascii);
+    write(d.file("b.stl"), bin);
+    for (const char* name : {"a.stl", "b.stl"}) {
+      Mesh m;
+      const LoadResult r = loadMesh(d.file(name), m);
+      ASSERT_TRUE(r.status.ok()) << name << ": " << r.status.message;
+      ASSERT_EQ(m.VN(), 4) << name << (nanCorner ? " with a NaN corner" : "");
+      ASSERT_EQ(m.FN(), 4) << name;
+      // First appearances in the file: the first face's corners, then the one vertex it lacks.
+      std::vector<int> order(tet.faces[0].begin(), tet.faces[0].end());
+      for (int v = 0; v < 4; ++v)
+        if (std::find(order.begin(), order.end(), v) == order.end()) order.push_back(v);
+      for (int i = 0; i < 4; ++i)
+        for (int c = 0; c < 3; ++c) {
+          const double want = static_cast<float>(p[order[i]][c]), got = m.vert[i].cP()[c];
+          if (std::isnan(want)) EXPECT_TRUE(std::isnan(got)) << name << " vertex " << i;
+          else EXPECT_NEAR(got, want, 1e-6) << name << " vertex " << i;
+        }
+      // The faces are the tetrahedron's, in its vertex numbering mapped through that order.
+      for (size_t f = 0; f < tet.faces.size(); ++f)
+        for (int k = 0; k < 3; ++k) {
+          const int idx = static_cast<int>(m.face[f].cV(k) - &m.vert[0]);
+          EXPECT_EQ(order[idx], tet.faces[f][k]) << name << " face " << f;
+        }
+      const MeshReport rep = validateMesh(toIndexed(m), "source", r.hadPolygons);
+      if (nanCorner) {
+        EXPECT_EQ(rep.status.code, ErrorCode::InvalidCoordinates) << name;
+        EXPECT_NE(rep.status.message.find("1 vertex with NaN"), std::string::npos) << rep.status.message;
+      } else {
+        EXPECT_TRUE(rep.status.ok()) << name << ": " << rep.status.message;
+      }
+    }
+  }
 }
 
 // A NaN or infinite coordinate is read in every text format (as MeshLab reads it) and left to

@@ -11,6 +11,7 @@
 #include <fstream>
 #include <sstream>
 #include <system_error>
+#include <unordered_map>
 
 #include <unistd.h>
 
@@ -415,6 +416,43 @@ std::string checkPly(const std::string& path, std::string& transcoded) {
   return {};
 }
 
+// Welds an STL's triangle soup: corners with the same coordinates, bit for bit (-0 as +0), become
+// one vertex, the first of them in file order, so vertex i is the file's i-th distinct corner.
+// Unlike vcglib's RemoveDuplicateVertex (which compares with ==), corners at the same NaN
+// coordinates weld too: validation then counts a bad vertex once, not once per facet using it.
+void weldStlCorners(Mesh& mesh) {
+  struct Key {
+    std::uint64_t b[3];
+    bool operator==(const Key& o) const { return b[0] == o.b[0] && b[1] == o.b[1] && b[2] == o.b[2]; }
+  };
+  struct KeyHash {
+    size_t operator()(const Key& k) const {
+      std::uint64_t h = 0x9E3779B97F4A7C15ull;
+      for (std::uint64_t x : k.b) h = (h ^ x) * 0xBF58476D1CE4E5B9ull, h ^= h >> 31;
+      return static_cast<size_t>(h);
+    }
+  };
+  std::unordered_map<Key, MeshVertex*, KeyHash> first;
+  first.reserve(mesh.vert.size());
+  std::vector<MeshVertex*> to(mesh.vert.size(), nullptr);
+  for (size_t i = 0; i < mesh.vert.size(); ++i) {
+    MeshVertex& v = mesh.vert[i];
+    if (v.IsD()) continue;
+    Key k;
+    for (int c = 0; c < 3; ++c) {
+      const double x = static_cast<double>(v.cP()[c]) + 0.0;  // -0 + 0 = +0
+      std::memcpy(&k.b[c], &x, sizeof x);
+    }
+    const auto [it, inserted] = first.emplace(k, &v);
+    to[i] = it->second;
+    if (!inserted) vcg::tri::Allocator<Mesh>::DeleteVertex(mesh, v);
+  }
+  for (auto& f : mesh.face)
+    if (!f.IsD())
+      for (int k = 0; k < 3; ++k) f.V(k) = to[f.V(k) - &mesh.vert.front()];
+  vcg::tri::Allocator<Mesh>::CompactEveryVector(mesh);
+}
+
 // The facets of an ASCII STL after its 'solid' word: `vertex x y z` triples, three per facet.
 std::string readAsciiStl(std::istream& in, Mesh& mesh) {
   std::vector<Vec3> corners;
@@ -568,8 +606,7 @@ LoadResult loadMeshUnchecked(const std::string& path, Mesh& mesh) {
   }
   if (ext == ".stl") {
     // STL stores triangle soups: merge coincident vertices so the surface has connectivity.
-    vcg::tri::Clean<Mesh>::RemoveDuplicateVertex(mesh);
-    vcg::tri::Allocator<Mesh>::CompactEveryVector(mesh);
+    weldStlCorners(mesh);
   }
   r.hadPolygons = (mask & io::Mask::IOM_BITPOLYGONAL) != 0;
   r.hasVertexColor = (mask & io::Mask::IOM_VERTCOLOR) != 0;
