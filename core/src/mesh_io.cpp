@@ -539,6 +539,7 @@ LoadResult loadMeshUnchecked(const std::string& path, Mesh& mesh) {
                                      ": check that TMPDIR (or /tmp) is a writable folder");
         return r;
       }
+      std::string().swap(transcoded);  // on disk now: not a second copy in memory while importing
       err = io::ImporterPLY<Mesh>::Open(mesh, tmp.path.c_str(), mask);
     }
     if (err != 0 && io::ImporterPLY<Mesh>::ErrorCritical(err)) what = io::ImporterPLY<Mesh>::ErrorMsg(err);
