@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cstdio>
 #include <filesystem>
 #include <cmath>
@@ -268,9 +269,10 @@ TEST(MeshIO, ObjAndStl) {
   EXPECT_EQ(s.VN(), 4);  // the triangle soup is welded
 }
 
-// An STL soup is welded by exact coordinates: vertex i is the file's i-th distinct corner (so
-// anchors given as vertex indices mean the same vertex on every run), and corners at one NaN
-// point weld too, so validation counts the bad vertex once, in ASCII and binary files alike.
+// An STL soup is welded by exact coordinates (-0 as +0): vertex i is the file's i-th distinct
+// corner (anchors given as vertex indices keep their meaning), a facet left with a repeated
+// corner is dropped, and corners at a NaN point ('nan' or '-nan') weld too, so validation counts
+// the bad vertex once, in ASCII and binary files alike.
 TEST(MeshIO, StlWeldKeepsFileOrderAndWeldsNaNCorners) {
   TempDir d;
   const IndexedMesh tet = fx::tetrahedron();
@@ -278,18 +280,22 @@ TEST(MeshIO, StlWeldKeepsFileOrderAndWeldsNaNCorners) {
     std::vector<Vec3> p = tet.positions;
     if (nanCorner) p[3].y() = std::nan("");
     p[1].z() = 0.0;  // written as -0 at every other appearance: -0 and +0 are one coordinate
-    int appearances = 0;
+    int appearances = 0, nanAppearances = 0;
     std::string ascii = "solid t\n", bin(80, ' ');
-    const std::uint32_t nf = static_cast<std::uint32_t>(tet.faces.size());
+    // The tetrahedron's facets, then a sliver on two of its corners (vertex 0 twice).
+    std::vector<std::array<int, 3>> facets(tet.faces.begin(), tet.faces.end());
+    facets.push_back({0, 1, 0});
+    const std::uint32_t nf = static_cast<std::uint32_t>(facets.size());
     bin.append(reinterpret_cast<const char*>(&nf), 4);
-    for (const auto& f : tet.faces) {
+    for (const auto& f : facets) {
       ascii += "facet normal 0 0 0\nouter loop\n";
       bin.append(12, '\0');
       for (int v : f) {
         ascii += "vertex";
         const bool negativeZero = v == 1 && appearances++ % 2 == 1;
         for (int c = 0; c < 3; ++c) {
-          const double value = negativeZero && c == 2 ? -0.0 : p[v][c];
+          double value = negativeZero && c == 2 ? -0.0 : p[v][c];
+          if (std::isnan(value)) value = std::copysign(value, nanAppearances++ % 2 ? -1.0 : 1.0);  // nan, -nan
           char num[64];
           std::snprintf(num, sizeof num, " %.17g", value);
           ascii += num;

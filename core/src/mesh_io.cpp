@@ -9,6 +9,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <sstream>
 #include <system_error>
 #include <unordered_map>
@@ -416,10 +417,13 @@ std::string checkPly(const std::string& path, std::string& transcoded) {
   return {};
 }
 
-// Welds an STL's triangle soup: corners with the same coordinates, bit for bit (-0 as +0), become
-// one vertex, the first of them in file order, so vertex i is the file's i-th distinct corner.
-// Unlike vcglib's RemoveDuplicateVertex (which compares with ==), corners at the same NaN
-// coordinates weld too: validation then counts a bad vertex once, not once per facet using it.
+// Welds an STL's triangle soup: corners with the same coordinates (-0 as +0, every NaN as one
+// NaN) become one vertex, the first of them in file order, so vertex i is the file's i-th
+// distinct corner (as vcglib's RemoveDuplicateVertex left it for finite coordinates). Corners at
+// a NaN point weld too, where vcglib's sort by position is undefined behaviour (its comparator
+// orders nothing against NaN) and left them apart: validation then counts a bad vertex once,
+// not once per facet using it. Facets left with a repeated corner (a sliver whose two corners
+// coincide) are dropped, as RemoveDuplicateVertex did.
 void weldStlCorners(Mesh& mesh) {
   struct Key {
     std::uint64_t b[3];
@@ -440,16 +444,19 @@ void weldStlCorners(Mesh& mesh) {
     if (v.IsD()) continue;
     Key k;
     for (int c = 0; c < 3; ++c) {
-      const double x = static_cast<double>(v.cP()[c]) + 0.0;  // -0 + 0 = +0
+      double x = static_cast<double>(v.cP()[c]) + 0.0;  // -0 + 0 = +0
+      if (std::isnan(x)) x = std::numeric_limits<double>::quiet_NaN();
       std::memcpy(&k.b[c], &x, sizeof x);
     }
     const auto [it, inserted] = first.emplace(k, &v);
     to[i] = it->second;
     if (!inserted) vcg::tri::Allocator<Mesh>::DeleteVertex(mesh, v);
   }
-  for (auto& f : mesh.face)
-    if (!f.IsD())
-      for (int k = 0; k < 3; ++k) f.V(k) = to[f.V(k) - &mesh.vert.front()];
+  for (auto& f : mesh.face) {
+    if (f.IsD()) continue;
+    for (int k = 0; k < 3; ++k) f.V(k) = to[f.V(k) - &mesh.vert.front()];
+    if (f.V(0) == f.V(1) || f.V(1) == f.V(2) || f.V(2) == f.V(0)) vcg::tri::Allocator<Mesh>::DeleteFace(mesh, f);
+  }
   vcg::tri::Allocator<Mesh>::CompactEveryVector(mesh);
 }
 
