@@ -11,6 +11,7 @@
 #include <fstream>
 #include <limits>
 #include <sstream>
+#include <string_view>
 #include <system_error>
 #include <unordered_map>
 
@@ -429,11 +430,9 @@ void weldStlCorners(Mesh& mesh) {
     std::uint64_t b[3];
     bool operator==(const Key& o) const { return b[0] == o.b[0] && b[1] == o.b[1] && b[2] == o.b[2]; }
   };
-  struct KeyHash {
+  struct KeyHash {  // the key's 24 bytes, hashed as the standard library hashes a string
     size_t operator()(const Key& k) const {
-      std::uint64_t h = 0x9E3779B97F4A7C15ull;
-      for (std::uint64_t x : k.b) h = (h ^ x) * 0xBF58476D1CE4E5B9ull, h ^= h >> 31;
-      return static_cast<size_t>(h);
+      return std::hash<std::string_view>{}(std::string_view(reinterpret_cast<const char*>(k.b), sizeof k.b));
     }
   };
   std::unordered_map<Key, MeshVertex*, KeyHash> first;
