@@ -276,6 +276,7 @@ struct RunArgs {
   int smooth = 0;
   int straighten = cbd::PathSmoothingOptions{}.rounds;
   bool noUntangle = false;
+  bool flipPaths = false;
 };
 
 double elapsed(std::chrono::steady_clock::time_point t0) {
@@ -300,6 +301,7 @@ cbd::CrossParameterizationOptions pipelineOptions(const RunArgs& a, const std::v
   o.smoothing.iterations = a.smooth;
   o.straightening.rounds = a.straighten;
   o.untangle = !a.noUntangle;
+  o.flipPaths = a.flipPaths;
   return o;
 }
 
@@ -329,6 +331,7 @@ json layoutJson(const cbd::LayoutPair& p) {
     l["diagram"] = p.reversed ? "target" : "source";
     l["same_surface"] = p.sameSurface;
     if (p.triedReverse) l["other_direction_detour"] = p.reverseDetour;
+    l["flips"] = p.flips;
     l["cut_paths"] = p.sourceStats.cutPaths;
     l["triangulation_paths"] = p.sourceStats.triangulationPaths;
     l["removed_paths"] = p.sourceStats.removedPaths;
@@ -368,6 +371,7 @@ void printLayout(const cbd::LayoutPair& p) {
     if (p.reversed)
       std::printf("        (the layout traced from the source's diagram detoured by %.2f: this one comes from the "
                   "target's Voronoi diagram)\n", p.reverseDetour);
+    if (p.flips > 0) std::printf("        path flipping: %d edges replaced on both surfaces\n", p.flips);
   } else {
     const auto& g = p.greedyStats;
     std::printf("layout  greedy: %zu edges, %zu patches; %d candidate pairs, %d traced, %d accepted, %d rejected, "
@@ -660,6 +664,11 @@ int main(int argc, char** argv) {
     cmd->add_option("--snap-tolerance", r.snapTolerance, "largest anchor snap distance (fraction of bbox diagonal)")
         ->capture_default_str()
         ->check(finiteRange(0.0, 1.0));
+    cmd->add_flag("--flip-paths", r.flipPaths,
+                  "Voronoi method with a target: after both layouts are built, replace every path by the other diagonal of its two "
+                  "patches when that is shorter on both surfaces together and both layouts stay consistent (the "
+                  "greedy baseline's path flipping, which that method always does)")
+        ->needs(t);
     cmd->add_option("--json", r.jsonPath, "also write a JSON report to this file ('-': to stdout, the log then goes to stderr)");
   };
   RunArgs layout;

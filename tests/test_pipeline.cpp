@@ -4,9 +4,11 @@
 
 #include <cmath>
 #include <filesystem>
+#include <map>
 
 #include "cbd/anchor_sampling.h"
 #include "cbd/pipeline.h"
+#include "cbd/target_layout.h"
 #include "cbd/validate_input.h"
 #include "support/fixtures.h"
 
@@ -109,6 +111,70 @@ TEST(Pipeline, CowToBullTakesTheBullsDiagramWhenTheCowsTwists) {
   EXPECT_EQ(r.metrics.flipped, 0);
   EXPECT_EQ(r.metrics.degenerate, 0);
   EXPECT_TRUE(std::isfinite(r.metrics.eL2) && r.metrics.eL2 >= 1.0);
+}
+
+namespace {
+double surfaceArea(const IndexedMesh& m) {
+  double a = 0;
+  for (const auto& f : m.faces)
+    a += 0.5 * (m.positions[f[1]] - m.positions[f[0]]).cross(m.positions[f[2]] - m.positions[f[0]]).norm();
+  return a;
+}
+/// What path flipping lowers: the paths' lengths on both surfaces, each over sqrt(area).
+double flipCost(const Layout& s, const Layout& t, double areaS, double areaT) {
+  double c = 0;
+  for (size_t e = 0; e < s.edges.size(); ++e)
+    c += chainLength(s.mesh, s.edges[e].vertices) / std::sqrt(areaS) +
+         chainLength(t.mesh, t.edges[e].vertices) / std::sqrt(areaT);
+  return c;
+}
+}  // namespace
+
+TEST(Pipeline, PathFlippingShortensTheVoronoiLayoutsAndKeepsThemValid) {
+  // The greedy baseline's path flipping applied to the Voronoi method's layouts: each flip
+  // replaces a path by the other diagonal of its two patches when that is shorter on both
+  // surfaces together, so the layouts stay valid and isomorphic, keep their edge count and
+  // anchors, and get strictly shorter with every flip.
+  const AnchoredPair e = anchoredSpheres(20, [](const Vec3& x) { return Vec3(1.6 * x.x(), x.y(), 0.8 * x.z()); });
+  const LayoutPair p = buildLayouts(e.source, e.sourceAnchors, e.target, e.targetAnchors, 2, {});
+  ASSERT_TRUE(p.status.ok()) << p.status.message;
+  const double areaS = surfaceArea(e.source), areaT = surfaceArea(e.target);
+  Layout s = p.source, t = p.target;
+  const PathFlippingResult f = flipLayoutPaths(s, t, EdgeNodeOptions{});
+  ASSERT_TRUE(f.status.ok()) << f.status.message;
+  EXPECT_GT(f.flips, 0);  // this pair has patches whose other diagonal is shorter
+  EXPECT_TRUE(validateLayout(s, 2).status.ok()) << validateLayout(s, 2).status.message;
+  EXPECT_TRUE(validateLayout(t, 2).status.ok()) << validateLayout(t, 2).status.message;
+  EXPECT_TRUE(checkIsomorphic(s, t).ok()) << checkIsomorphic(s, t).message;
+  EXPECT_EQ(s.edges.size(), p.source.edges.size());
+  EXPECT_EQ(s.anchorVertices, p.source.anchorVertices);
+  EXPECT_EQ(t.anchorVertices, p.target.anchorVertices);
+  EXPECT_LT(flipCost(s, t, areaS, areaT), flipCost(p.source, p.target, areaS, areaT) - 1e-9);
+  int flipped = 0;
+  std::map<std::pair<int, int>, int> pairs;
+  for (const LayoutEdge& x : s.edges) ++pairs[std::minmax(x.a, x.b)];
+  for (const LayoutEdge& x : s.edges)
+    if (x.kind == EdgeKind::Flipped) {
+      ++flipped;
+      EXPECT_EQ(x.cut, -1);
+      EXPECT_EQ((pairs[std::minmax(x.a, x.b)]), 1) << "a flip linked anchors " << x.a << " and " << x.b << " twice";
+    }
+  EXPECT_EQ(flipped, f.flips);
+  // Faces split by the new paths keep a Voronoi cluster.
+  ASSERT_EQ(s.faceCluster.size(), static_cast<size_t>(s.mesh.faceCount()));
+  for (int c : s.faceCluster) EXPECT_GE(c, 0);
+
+  // The same through the pipeline, to the end: the same flips, a map without flipped triangles.
+  CrossParameterizationOptions o;
+  o.flipPaths = true;
+  const CrossParameterizationResult r = crossParameterize(e.source, e.sourceAnchors, e.target, e.targetAnchors, 2, o);
+  ASSERT_TRUE(r.status.ok()) << r.status.message;
+  EXPECT_EQ(r.layouts.flips, f.flips);
+  EXPECT_EQ(r.metrics.flipped, 0);
+  EXPECT_TRUE(std::isfinite(r.metrics.eL2) && r.metrics.eL2 >= 1.0);
+
+  Layout none;
+  EXPECT_EQ(flipLayoutPaths(none, t, EdgeNodeOptions{}).status.code, ErrorCode::InvalidArgument);
 }
 
 TEST(Pipeline, AMeshOntoItselfIsTheIdentity) {

@@ -25,6 +25,15 @@ double area(const IndexedMesh& m) {
   return a;
 }
 
+double area(const RefinedMesh& m) {
+  double a = 0;
+  for (int f = 0; f < m.faceCount(); ++f) {
+    const auto v = m.faceVertices(f);
+    a += 0.5 * (m.position(v[1]) - m.position(v[0])).cross(m.position(v[2]) - m.position(v[0])).norm();
+  }
+  return a;
+}
+
 bool cyclicEqual(std::vector<int> a, const std::vector<int>& b) {
   if (a.size() != b.size()) return false;
   if (a.empty()) return true;
@@ -73,6 +82,180 @@ std::vector<RegionEnd> regionEnds(const RefinedMesh& m, const std::vector<int>& 
     }
   return out;
 }
+
+/// Two layouts edited together with shared edge ids (the greedy method's state, and the state
+/// path flipping needs on any pair of isomorphic layouts): a tracer per surface, the edges,
+/// their chain on either surface, and how often each anchor pair is linked.
+struct PairEditor {
+  Side& ss;
+  Side& st;
+  double scale[2];
+  std::vector<LayoutEdge> edges;  // shared ids; their chains are in `chains`
+  std::vector<std::vector<int>> chains[2];
+  std::vector<std::vector<int>> linked;
+  RegionScratch scratch[2];
+  Status status;
+
+  PairEditor(Side& s, Side& t, int anchors, double scaleS, double scaleT)
+      : ss(s), st(t), scale{scaleS, scaleT}, linked(anchors, std::vector<int>(anchors, 0)) {}
+
+  // Both partial layouts agree after a new pair of paths: same rotation at their anchors, same
+  // signatures of the regions beside the two chains (the other regions agreed before and are
+  // unchanged, as in the Voronoi method's target layout).
+  bool consistent(std::initializer_list<int> at, const std::vector<int>& cs, const std::vector<int>& ct) {
+    for (int a : at)
+      if (!cyclicEqual(rotationAt(ss.layout.mesh, ss.tracer.edgePath(), ss.vertex(a)),
+                       rotationAt(st.layout.mesh, st.tracer.edgePath(), st.vertex(a))))
+        return false;
+    auto around = [](const RefinedMesh& m, const std::vector<int>& chain) {
+      std::vector<int> faces;
+      for (size_t k = 0; k + 1 < chain.size(); ++k) {
+        const int h = m.findHalfedge(chain[k], chain[k + 1]);
+        faces.push_back(m.face(h));
+        faces.push_back(m.face(RefinedMesh::twin(h)));
+      }
+      return faces;
+    };
+    return regionSignaturesAt(ss.layout.mesh, ss.tracer.edgePath(), ss.anchorMap(), edges, around(ss.layout.mesh, cs),
+                              scratch[0]) ==
+           regionSignaturesAt(st.layout.mesh, st.tracer.edgePath(), st.anchorMap(), edges, around(st.layout.mesh, ct),
+                              scratch[1]);
+  }
+
+  // Trace on both surfaces and keep the pair of paths if consistent (1); else undo (0);
+  // -1 with `status` set on an internal error.
+  int tryLink(int id, const PathQuery& qs, const PathQuery& qt, int a, int b) {
+    const TracedPath ps = ss.tracer.trace(qs);
+    if (!ps.found) return 0;
+    const TracedPath pt = st.tracer.trace(qt);
+    if (!pt.found) return 0;
+    // Cyclic order first, before anything is cut into the meshes: the two paths must leave
+    // both anchors between the same existing edges.
+    if (ss.tracer.sectorOf(ps, false) != st.tracer.sectorOf(pt, false) ||
+        ss.tracer.sectorOf(ps, true) != st.tracer.sectorOf(pt, true))
+      return 0;
+    std::vector<int> cs, ct;
+    if (Status s = ss.tracer.commit(ps, id, cs); !s) return status = s, -1;
+    if (Status s = st.tracer.commit(pt, id, ct); !s) return status = s, -1;
+    edges[id].a = a, edges[id].b = b;
+    if (consistent({a, b}, cs, ct)) {
+      chains[0][id] = std::move(cs);
+      chains[1][id] = std::move(ct);
+      edges[id].length = ps.length;
+      ++linked[a][b], ++linked[b][a];
+      return 1;
+    }
+    ss.tracer.release(cs, id);
+    st.tracer.release(ct, id);
+    return 0;
+  }
+
+  int newEdge(EdgeKind kind) {
+    LayoutEdge e;
+    e.kind = kind;
+    edges.push_back(e);
+    chains[0].emplace_back();
+    chains[1].emplace_back();
+    return static_cast<int>(edges.size()) - 1;
+  }
+  void dropLast() {
+    edges.pop_back();
+    chains[0].pop_back();
+    chains[1].pop_back();
+  }
+
+  // Path flipping: replace an edge by the other diagonal of its two patches when that is
+  // shorter on both surfaces together (lengths over the square root of each surface's area)
+  // and both layouts stay consistent; an anchor pair already linked is not linked again. Only
+  // the regions beside the edge are flooded, not the whole surfaces. `kind`: what a replaced
+  // edge becomes (its own kind stays when nullptr). Returns the edges replaced, -1 with
+  // `status` set on an internal error.
+  int flipPaths(const EdgeKind* kind) {
+    int flips = 0;
+    std::vector<int> faces, labels[2];
+    Side* sides[2] = {&ss, &st};
+    for (int e = 0; e < static_cast<int>(edges.size()); ++e) {
+      const std::vector<int>& ch = chains[0][e];
+      const int h = ss.layout.mesh.findHalfedge(ch[0], ch[1]);
+      const std::vector<int>& anchorOfS = ss.anchorMap();
+      const Region left = regionAt(ss.layout.mesh, ss.tracer.edgePath(), anchorOfS, ss.layout.mesh.face(h), scratch[0], faces);
+      const Region right = regionAt(ss.layout.mesh, ss.tracer.edgePath(), anchorOfS,
+                                    ss.layout.mesh.face(RefinedMesh::twin(h)), scratch[0], faces);
+      auto opposite = [&](const Region& reg) {
+        for (int c : reg.loops[0].corners)
+          if (c != edges[e].a && c != edges[e].b) return c;
+        return -1;
+      };
+      const int c = opposite(left), d = opposite(right);
+      if (c < 0 || d < 0 || c == d || linked[c][d]) continue;
+      const double oldCost = edges[e].length / scale[0] + [&] {
+        double l = 0;
+        for (size_t k = 0; k + 1 < chains[1][e].size(); ++k)
+          l += (st.layout.mesh.position(chains[1][e][k + 1]) - st.layout.mesh.position(chains[1][e][k])).norm();
+        return l;
+      }() / scale[1];
+      const LayoutEdge old = edges[e];
+      const std::vector<int> oldS = chains[0][e], oldT = chains[1][e];
+      ss.tracer.release(oldS, e);
+      st.tracer.release(oldT, e);
+      --linked[old.a][old.b], --linked[old.b][old.a];
+      // Trace c-d inside the merged quadrilateral on both surfaces.
+      bool ok = false;
+      PathQuery q[2];
+      for (int s = 0; s < 2; ++s) {
+        Side& sd = *sides[s];
+        const int hv = sd.layout.mesh.findHalfedge(s == 0 ? oldS[0] : oldT[0], s == 0 ? oldS[1] : oldT[1]);
+        const Region reg = regionAt(sd.layout.mesh, sd.tracer.edgePath(), sd.anchorMap(), sd.layout.mesh.face(hv),
+                                    scratch[s], faces);
+        labels[s].assign(sd.layout.mesh.faceCount(), -1);
+        for (int f : faces) labels[s][f] = 0;
+        q[s].filter = {&labels[s], 0, 0};
+        q[s].source = sd.vertex(c);
+        q[s].goals.push_back({sd.vertex(d), {}, 0});
+        if (reg.loops.size() == 1)
+          for (size_t k = 0; k < reg.loops[0].corners.size(); ++k) {
+            const auto wedge = cornerWedge(sd.layout.mesh, sd.tracer.edgePath(), reg.loops[0].cornerHalfedge[k]);
+            if (reg.loops[0].corners[k] == c) q[s].sourceFaces = wedge;
+            if (reg.loops[0].corners[k] == d) q[s].goals[0].faces = wedge;
+          }
+      }
+      const TracedPath ps = ss.tracer.trace(q[0]), pt = st.tracer.trace(q[1]);
+      if (ps.found && pt.found && ps.length / scale[0] + pt.length / scale[1] < oldCost) {
+        const int res = tryLink(e, q[0], q[1], c, d);
+        if (res < 0) return -1;
+        ok = res == 1;
+      }
+      if (ok) {
+        if (kind) edges[e].kind = *kind, edges[e].cut = -1, edges[e].eta = 0;
+        ++flips;
+        continue;
+      }
+      edges[e] = old;
+      if (Status s = ss.tracer.recommit(oldS, e); !s) return status = s, -1;
+      if (Status s = st.tracer.recommit(oldT, e); !s) return status = s, -1;
+      chains[0][e] = oldS, chains[1][e] = oldT;
+      ++linked[old.a][old.b], ++linked[old.b][old.a];
+    }
+    return flips;
+  }
+
+  // Both layouts from the edges, patch k corresponding to patch k.
+  Status finish() {
+    Side* sides[2] = {&ss, &st};
+    for (int s = 0; s < 2; ++s) {
+      Layout& L = sides[s]->layout;
+      L.edges = edges;
+      for (size_t e = 0; e < edges.size(); ++e) {
+        L.edges[e].vertices = chains[s][e];
+        L.edges[e].length = chainLength(L.mesh, chains[s][e]);
+      }
+      L.edgePath = sides[s]->tracer.edgePath();
+      if (Status st2 = assemblePatches(L); !st2) return st2;
+    }
+    if (Status s = alignPatches(ss.layout, st.layout); !s) return s;
+    return checkIsomorphic(ss.layout, st.layout);
+  }
+};
 
 }  // namespace
 
@@ -156,72 +339,17 @@ GreedyLayoutResult buildGreedyLayout(const IndexedMesh& S, const std::vector<int
   r.candidateSeconds = seconds(t0);
   t0 = std::chrono::steady_clock::now();
 
-  std::vector<LayoutEdge> edges;  // shared ids; vertices are the source chains
-  std::vector<std::vector<int>> chains[2];
-  std::vector<std::vector<char>> linked(na, std::vector<char>(na, 0));
-
-  // Both partial layouts agree after a new pair of paths: same rotation at their anchors, same
-  // signatures of the regions beside the two chains (the other regions agreed before and are
-  // unchanged, as in the Voronoi method's target layout).
-  RegionScratch scratch[2];
-  auto consistent = [&](std::initializer_list<int> at, const std::vector<int>& cs, const std::vector<int>& ct) {
-    for (int a : at)
-      if (!cyclicEqual(rotationAt(ss.layout.mesh, ss.tracer.edgePath(), ss.vertex(a)),
-                       rotationAt(st.layout.mesh, st.tracer.edgePath(), st.vertex(a))))
-        return false;
-    auto around = [](const RefinedMesh& m, const std::vector<int>& chain) {
-      std::vector<int> faces;
-      for (size_t k = 0; k + 1 < chain.size(); ++k) {
-        const int h = m.findHalfedge(chain[k], chain[k + 1]);
-        faces.push_back(m.face(h));
-        faces.push_back(m.face(RefinedMesh::twin(h)));
-      }
-      return faces;
-    };
-    return regionSignaturesAt(ss.layout.mesh, ss.tracer.edgePath(), ss.anchorMap(), edges, around(ss.layout.mesh, cs),
-                              scratch[0]) ==
-           regionSignaturesAt(st.layout.mesh, st.tracer.edgePath(), st.anchorMap(), edges, around(st.layout.mesh, ct),
-                              scratch[1]);
+  PairEditor ed(ss, st, na, scale[0], scale[1]);
+  std::vector<LayoutEdge>& edges = ed.edges;
+  auto& linked = ed.linked;
+  auto& scratch = ed.scratch;
+  auto tryLink = [&](int id, const PathQuery& qs, const PathQuery& qt, int a, int b) {
+    const int res = ed.tryLink(id, qs, qt, a, b);
+    if (res < 0) r.status = ed.status;
+    return res;
   };
-  // Trace on both surfaces and keep the pair of paths if consistent; else undo.
-  auto tryLink = [&](int id, PathQuery qs, PathQuery qt, int a, int b) -> int {
-    const TracedPath ps = ss.tracer.trace(qs);
-    if (!ps.found) return 0;
-    const TracedPath pt = st.tracer.trace(qt);
-    if (!pt.found) return 0;
-    // Cyclic order first, before anything is cut into the meshes: the two paths must leave
-    // both anchors between the same existing edges.
-    if (ss.tracer.sectorOf(ps, false) != st.tracer.sectorOf(pt, false) ||
-        ss.tracer.sectorOf(ps, true) != st.tracer.sectorOf(pt, true))
-      return 0;
-    std::vector<int> cs, ct;
-    if (Status s = ss.tracer.commit(ps, id, cs); !s) return r.status = s, -1;
-    if (Status s = st.tracer.commit(pt, id, ct); !s) return r.status = s, -1;
-    edges[id].a = a, edges[id].b = b;
-    if (consistent({a, b}, cs, ct)) {
-      chains[0][id] = std::move(cs);
-      chains[1][id] = std::move(ct);
-      edges[id].length = ps.length;
-      linked[a][b] = linked[b][a] = 1;
-      return 1;
-    }
-    ss.tracer.release(cs, id);
-    st.tracer.release(ct, id);
-    return 0;
-  };
-  auto newEdge = [&](EdgeKind kind) {
-    LayoutEdge e;
-    e.kind = kind;
-    edges.push_back(e);
-    chains[0].emplace_back();
-    chains[1].emplace_back();
-    return static_cast<int>(edges.size()) - 1;
-  };
-  auto dropLast = [&] {
-    edges.pop_back();
-    chains[0].pop_back();
-    chains[1].pop_back();
-  };
+  auto newEdge = [&](EdgeKind kind) { return ed.newEdge(kind); };
+  auto dropLast = [&] { ed.dropLast(); };
 
   // 2. Trial and error in order of length.
   for (const Candidate& c : queue) {
@@ -364,87 +492,53 @@ GreedyLayoutResult buildGreedyLayout(const IndexedMesh& S, const std::vector<int
     updateRegion(mt, st.layout.mesh, st.tracer.edgePath(), st.anchorMap(), badT, scratch[1]);
   }
 
-  // 4. Path flipping: replace an edge by the other diagonal of its two patches when shorter.
-  // Only the regions beside the edge are flooded, not the whole surfaces.
+  // 4. Path flipping.
   if (options.flipPaths) {
-    std::vector<int> faces, labels[2];
-    for (int e = 0; e < static_cast<int>(edges.size()); ++e) {
-      const std::vector<int>& ch = chains[0][e];
-      const int h = ss.layout.mesh.findHalfedge(ch[0], ch[1]);
-      const std::vector<int>& anchorOfS = ss.anchorMap();
-      const Region left = regionAt(ss.layout.mesh, ss.tracer.edgePath(), anchorOfS, ss.layout.mesh.face(h), scratch[0], faces);
-      const Region right = regionAt(ss.layout.mesh, ss.tracer.edgePath(), anchorOfS,
-                                    ss.layout.mesh.face(RefinedMesh::twin(h)), scratch[0], faces);
-      auto opposite = [&](const Region& reg) {
-        for (int c : reg.loops[0].corners)
-          if (c != edges[e].a && c != edges[e].b) return c;
-        return -1;
-      };
-      const int c = opposite(left), d = opposite(right);
-      if (c < 0 || d < 0 || c == d || linked[c][d]) continue;
-      const double oldCost = edges[e].length / scale[0] + [&] {
-        double l = 0;
-        for (size_t k = 0; k + 1 < chains[1][e].size(); ++k)
-          l += (st.layout.mesh.position(chains[1][e][k + 1]) - st.layout.mesh.position(chains[1][e][k])).norm();
-        return l;
-      }() / scale[1];
-      const LayoutEdge old = edges[e];
-      const std::vector<int> oldS = chains[0][e], oldT = chains[1][e];
-      ss.tracer.release(oldS, e);
-      st.tracer.release(oldT, e);
-      linked[old.a][old.b] = linked[old.b][old.a] = 0;
-      // Trace c-d inside the merged quadrilateral on both surfaces.
-      bool ok = false;
-      PathQuery q[2];
-      for (int s = 0; s < 2; ++s) {
-        Side& sd = *sides[s];
-        const int hv = sd.layout.mesh.findHalfedge(s == 0 ? oldS[0] : oldT[0], s == 0 ? oldS[1] : oldT[1]);
-        const Region reg = regionAt(sd.layout.mesh, sd.tracer.edgePath(), sd.anchorMap(), sd.layout.mesh.face(hv),
-                                    scratch[s], faces);
-        labels[s].assign(sd.layout.mesh.faceCount(), -1);
-        for (int f : faces) labels[s][f] = 0;
-        q[s].filter = {&labels[s], 0, 0};
-        q[s].source = sd.vertex(c);
-        q[s].goals.push_back({sd.vertex(d), {}, 0});
-        if (reg.loops.size() == 1)
-          for (size_t k = 0; k < reg.loops[0].corners.size(); ++k) {
-            const auto wedge = cornerWedge(sd.layout.mesh, sd.tracer.edgePath(), reg.loops[0].cornerHalfedge[k]);
-            if (reg.loops[0].corners[k] == c) q[s].sourceFaces = wedge;
-            if (reg.loops[0].corners[k] == d) q[s].goals[0].faces = wedge;
-          }
-      }
-      const TracedPath ps = ss.tracer.trace(q[0]), pt = st.tracer.trace(q[1]);
-      if (ps.found && pt.found && ps.length / scale[0] + pt.length / scale[1] < oldCost) {
-        const int res = tryLink(e, q[0], q[1], c, d);
-        if (res < 0) return r;
-        ok = res == 1;
-      }
-      if (ok) {
-        ++r.flips;
-        continue;
-      }
-      edges[e] = old;
-      if (Status s = ss.tracer.recommit(oldS, e); !s) return r.status = s, r;
-      if (Status s = st.tracer.recommit(oldT, e); !s) return r.status = s, r;
-      chains[0][e] = oldS, chains[1][e] = oldT;
-      linked[old.a][old.b] = linked[old.b][old.a] = 1;
-    }
+    r.flips = ed.flipPaths(nullptr);
+    if (r.flips < 0) return r.status = ed.status, r;
   }
 
   // 5. Both layouts, patch k corresponding to patch k.
-  for (int s = 0; s < 2; ++s) {
-    Layout& L = sides[s]->layout;
-    L.edges = edges;
-    for (size_t e = 0; e < edges.size(); ++e) {
-      L.edges[e].vertices = chains[s][e];
-      L.edges[e].length = chainLength(L.mesh, chains[s][e]);
-    }
-    L.edgePath = sides[s]->tracer.edgePath();
-    if (Status st2 = assemblePatches(L); !st2) return r.status = st2, r;
-  }
-  if (Status s = alignPatches(r.source, r.target); !s) return r.status = s, r;
-  if (Status s = checkIsomorphic(r.source, r.target); !s) return r.status = s, r;
+  if (Status s = ed.finish(); !s) return r.status = s, r;
   r.layoutSeconds = seconds(t0);
+  return r;
+}
+
+PathFlippingResult flipLayoutPaths(Layout& source, Layout& target, const EdgeNodeOptions& edgeNodes) {
+  PathFlippingResult r;
+  const auto t0 = std::chrono::steady_clock::now();
+  const int na = source.anchorCount();
+  if (na != target.anchorCount() || source.edges.size() != target.edges.size() || source.edges.empty() ||
+      source.edgePath.size() != static_cast<size_t>(source.mesh.edgeCount()) ||
+      target.edgePath.size() != static_cast<size_t>(target.mesh.edgeCount())) {
+    r.status = Status::error(ErrorCode::InvalidArgument,
+                             "path flipping needs two complete layouts with the same anchors and edges");
+    return r;
+  }
+  if (Status s = checkIsomorphic(source, target); !s) return r.status = s, r;
+  Layout* layouts[2] = {&source, &target};
+  // Each surface's tracer holds its layout's paths again; the Voronoi clusters, when the layout
+  // has them, are the faces' labels, so that faces split by a new path keep their cluster.
+  Side ss(source, edgeNodes), st(target, edgeNodes);
+  Side* sides[2] = {&ss, &st};
+  PairEditor ed(ss, st, na, std::sqrt(area(source.mesh)), std::sqrt(area(target.mesh)));
+  ed.edges = source.edges;
+  for (int s = 0; s < 2; ++s) {
+    const Layout& L = *layouts[s];
+    for (size_t e = 0; e < L.edges.size(); ++e) {
+      ed.chains[s].push_back(L.edges[e].vertices);
+      if (Status st2 = sides[s]->tracer.recommit(L.edges[e].vertices, static_cast<int>(e)); !st2) return r.status = st2, r;
+    }
+    if (L.faceCluster.size() == static_cast<size_t>(L.mesh.faceCount())) sides[s]->tracer.faceLabel() = L.faceCluster;
+  }
+  for (const LayoutEdge& e : source.edges) ++ed.linked[e.a][e.b], ++ed.linked[e.b][e.a];
+  const EdgeKind flipped = EdgeKind::Flipped;
+  r.flips = ed.flipPaths(&flipped);
+  if (r.flips < 0) return r.flips = 0, r.status = ed.status, r;
+  for (int s = 0; s < 2; ++s)
+    if (!layouts[s]->faceCluster.empty()) layouts[s]->faceCluster = sides[s]->tracer.faceLabel();
+  if (Status s = ed.finish(); !s) return r.status = s, r;
+  r.seconds = seconds(t0);
   return r;
 }
 

@@ -72,6 +72,7 @@ LayoutPair buildLayouts(const IndexedMesh& source, const std::vector<int>& sa, c
     GreedyLayoutOptions g;
     g.edgeNodes = options.edgeNodes;
     g.anchorNames = options.anchorNames;
+    g.flipPaths = options.greedyFlipPaths;
     p.greedyStats = buildGreedyLayout(source, sa, target, ta, g);
     p.times.sourceLayout = p.greedyStats.candidateSeconds + p.greedyStats.layoutSeconds;
     if (!p.greedyStats.status) return p.status = p.greedyStats.status, p;
@@ -106,6 +107,16 @@ LayoutPair buildLayouts(const IndexedMesh& source, const std::vector<int>& sa, c
       p.times.targetLayout = first.targetLayout + second.targetLayout;
     }
     if (!p.status) return p;
+    if (options.flipPaths && !p.sameSurface) {
+      const PathFlippingResult f = flipLayoutPaths(p.source, p.target, options.edgeNodes);
+      p.times.targetLayout += f.seconds;
+      if (!f.status) return p.status = f.status, p;
+      p.flips = f.flips;
+      // Both layouts changed: check both.
+      if (f.flips > 0)
+        if (const LayoutCheck c = validateLayout(p.reversed ? p.target : p.source, euler); !c.status)
+          return p.status = c.status, p;
+    }
   }
   // Check the layout not checked yet: the Voronoi method checked the one its diagram gave
   // before tracing the other from it (on a mesh paired with itself both are that one), the

@@ -221,6 +221,9 @@ rm -f sample_report.json; "$CBD" sample-anchors -m octa.off -n 3 -o s.pp --json 
 "$CBD" layout --source octa.off --source-anchors octa.txt -o e1_out --single-edge-node --min-edge-nodes 5 >/dev/null 2>e1b.err; rc=$?
 [ "$rc" = 2 ] && grep -q "excludes" e1b.err && [ ! -e e1_out ] &&
   ok "--single-edge-node with --min-edge-nodes: exit 2, $(cat e1b.err)" || bad "--single-edge-node with --min-edge-nodes: exit $rc, $(cat e1b.err)"
+"$CBD" layout --source octa.off --source-anchors octa.txt -o flip_out --flip-paths >/dev/null 2>flipnt.err; rc=$?
+[ "$rc" = 2 ] && grep -q -- "--flip-paths requires --target" flipnt.err && [ ! -e flip_out ] &&
+  ok "--flip-paths without a target: exit 2, $(cat flipnt.err)" || bad "--flip-paths without a target: exit $rc, $(cat flipnt.err)"
 # Reports and anchors onto a device are written in place: a rename over /dev/null would replace
 # it with a file (as root).
 "$CBD" check --source octa.off --target octa.off "${P[@]}" --json /dev/null >/dev/null 2>&1; rc=$?
@@ -361,6 +364,20 @@ PY
       bad "cbd map bull -> cow ($method): exit $rc, $res $(cat map.err)"
     fi
   done
+  # --flip-paths: the greedy method's path flipping on the Voronoi layouts; the log says how many
+  # edges were replaced, as the JSON does, and the layouts differ from the default's.
+  "$CBD" layout --source "$MESHES/bull.off" --source-anchors "$EXAMPLES/bull_picked_points.pp" \
+    --target "$MESHES/cow.off" --target-anchors "$EXAMPLES/cow_picked_points.pp" --out layout_unflipped >/dev/null 2>&1
+  "$CBD" layout --source "$MESHES/bull.off" --source-anchors "$EXAMPLES/bull_picked_points.pp" \
+    --target "$MESHES/cow.off" --target-anchors "$EXAMPLES/cow_picked_points.pp" --flip-paths \
+    --out layout_flipped --json layout_flipped.json >layout_flipped.out 2>&1; rc=$?
+  flips=$(python3 -c "import json;d=json.load(open('layout_flipped.json'));print(d['layout']['flips'] if d['status'] == 'ok' else -1)" 2>/dev/null)
+  if [ "$rc" = 0 ] && [ "${flips:-0}" -gt 0 ] && grep -qF "path flipping: $flips edges replaced" layout_flipped.out &&
+     [ -s layout_unflipped/target/paths.ply ] && ! cmp -s layout_flipped/target/paths.ply layout_unflipped/target/paths.ply; then
+    ok "cbd layout --flip-paths: $flips edges replaced"
+  else
+    bad "cbd layout --flip-paths: exit $rc, flips '$flips', $(grep flipping layout_flipped.out)"
+  fi
   # --straighten 0: the paths as traced, no straighten report, other paths than the default's.
   # With --smooth 3: its sweeps reported in the log as in the JSON.
   "$CBD" map --source "$MESHES/bull.off" --source-anchors "$EXAMPLES/bull_picked_points.pp" \

@@ -52,4 +52,22 @@ GreedyLayoutResult buildGreedyLayout(const IndexedMesh& source, const std::vecto
                                      const IndexedMesh& target, const std::vector<int>& targetAnchors,
                                      const GreedyLayoutOptions& options = {});
 
+/// Result of `flipLayoutPaths`.
+struct PathFlippingResult {
+  Status status;
+  int flips = 0;         ///< edges replaced by the other diagonal of their two patches
+  double seconds = 0.0;
+};
+
+/// The greedy method's path flipping (step 4 above, the same code) as a post-process of any
+/// two isomorphic layouts, e.g. the Voronoi method's, so that both methods can be given the
+/// post-processing the paper grants the baseline: every edge in turn is replaced by the other
+/// diagonal of its two patches when that is shorter on both surfaces together and both layouts
+/// stay consistent (cyclic order, regions); a pair of anchors already linked is not linked
+/// again. A replaced edge becomes `EdgeKind::Flipped`; patches are assembled anew, patch k
+/// still corresponding to patch k. The layouts keep their meshes (paths cut in since stay
+/// split). Errors: InvalidArgument when the layouts are not a complete isomorphic pair;
+/// InternalError from the layout checks.
+PathFlippingResult flipLayoutPaths(Layout& source, Layout& target, const EdgeNodeOptions& edgeNodes);
+
 }  // namespace cbd

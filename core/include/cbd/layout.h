@@ -18,7 +18,8 @@ namespace cbd {
 enum class EdgeKind {
   VoronoiCut,     ///< traced across a cut of the anchors' Voronoi diagram (Sec. 5.1)
   Triangulation,  ///< added to triangulate a region that was not a triangle (Sec. 5.1)
-  Greedy          ///< accepted by the greedy shortest-path baseline (Kraevoy & Sheffer 2004)
+  Greedy,         ///< accepted by the greedy shortest-path baseline (Kraevoy & Sheffer 2004)
+  Flipped         ///< a Voronoi layout's edge replaced by path flipping (`flipLayoutPaths`)
 };
 
 /// How messages name anchor k: by its name in quotes when `names` has one (the names of the

@@ -36,6 +36,12 @@ struct CrossParameterizationOptions {
   /// fails, the layout is also built the other way round — from the target's Voronoi diagram,
   /// traced on the source — and the one with the smaller detour is kept. 0: never.
   double reverseDetour = 2.0;
+  /// Voronoi method: the greedy baseline's path flipping (`flipLayoutPaths`) applied to its
+  /// layouts too, after they are built (the baseline always flips, as the paper grants it).
+  bool flipPaths = false;
+  /// Greedy method: its path flipping (step 4 of greedy_layout.h; off only to measure what the
+  /// flipping does, as `cbd_bench flipping` does).
+  bool greedyFlipPaths = true;
   /// Both layouts' paths straightened inside their two patches (path_smoothing.h), for either
   /// method alike; 0 rounds: the paths as traced.
   PathSmoothingOptions straightening;
@@ -51,7 +57,7 @@ struct CrossParameterizationOptions {
 struct StageTimes {
   double voronoi = 0.0;          ///< Voronoi clusters on both surfaces (0 for greedy)
   double sourceLayout = 0.0;     ///< greedy: all-pairs paths + trial and error (both surfaces)
-  double targetLayout = 0.0;
+  double targetLayout = 0.0;     ///< Voronoi: + path flipping, when on
   double straighten = 0.0;       ///< path straightening on both surfaces
   double parameterization = 0.0; ///< both surfaces' patch maps + composition (+ smoothing)
   double untangle = 0.0;         ///< removing flipped triangles from M_st and M_ts
@@ -73,6 +79,7 @@ struct LayoutPair {
   bool reversed = false;            ///< ... and that one was kept (its statistics are in sourceStats /
                                     ///< targetStats with the roles of the surfaces swapped)
   double reverseDetour = 0.0;       ///< the detour of the layout pair not kept (0: failed)
+  int flips = 0;                    ///< Voronoi with `flipPaths`: edges replaced by path flipping
   /// Voronoi: the target is the source itself (same vertices, faces and anchors), so its layout
   /// is the source's rather than one traced again in Procedure 1 order (which, on the same
   /// surface, can take other shortest paths where paths compete for vertices).
