@@ -319,6 +319,46 @@ int sensitivity(const fs::path& root, const std::string& manifest, const fs::pat
   return 0;
 }
 
+/// What path flipping (greedy_layout.h, step 4) does for each method: greedy with and without
+/// its flipping, Voronoi C without (cbd's default) and with it (`flipLayoutPaths`), all else as
+/// cbd's defaults, each run in its own process -> OUTDIR/flipping.csv.
+int flipping(const fs::path& root, const std::string& manifest, const fs::path& out) {
+  std::vector<Pair> pairs;
+  if (!readManifest(root, manifest, pairs)) return 1;
+  fs::create_directories(out);
+  std::ofstream csv(out / "flipping.csv");
+  csv << "pair,method,flip_paths,status,e_ang,e_l2,flipped,e_ang_composed,e_l2_composed,t_layout,t_total,error\n";
+  for (const Pair& p : pairs) {
+    LoadedPair lp;
+    if (const std::string why = loadPair(p, lp); !why.empty()) {
+      std::printf("%-24s %s\n", p.name.c_str(), why.c_str());
+      continue;
+    }
+    for (const Method& m : methods()) {
+      if (m.name != "greedy" && m.name != "voronoi-C") continue;
+      for (bool flip : {false, true}) {
+        CrossParameterizationOptions o = m.options;
+        if (o.method == LayoutMethod::Greedy)
+          o.greedyFlipPaths = flip;
+        else
+          o.flipPaths = flip;
+        const Run r = runPair(lp, o);
+        csv << p.name << ',' << m.name << ',' << flip << ',' << (r.ok ? "ok" : "failed") << ',' << r.eAng << ','
+            << r.eL2 << ',' << r.flipped << ',' << r.eAngRaw << ',' << r.eL2Raw << ',' << r.tLayout << ',' << r.tTotal
+            << ",\"" << r.error << "\"\n";
+        csv.flush();
+        std::printf("%-22s %-10s flip paths %d: %s E_ang %.3f E_L2 %.3f flipped %d (composed %.3f %.3f) layout %.3fs "
+                    "total %.1fs %s\n",
+                    p.name.c_str(), m.name.c_str(), flip, r.ok ? "ok    " : "FAILED", r.eAng, r.eL2, r.flipped,
+                    r.eAngRaw, r.eL2Raw, r.tLayout, r.tTotal, r.ok ? "" : r.error.c_str());
+        std::fflush(stdout);
+      }
+    }
+  }
+  std::printf("wrote %s\n", (out / "flipping.csv").c_str());
+  return 0;
+}
+
 /// The source's faces by their geodesically nearest anchor (multi-source Dijkstra over the
 /// edges; a face goes to the anchor nearest to its centroid through one of its corners): the
 /// same regions for both methods, whatever their layouts.
@@ -625,6 +665,8 @@ int defaults(const fs::path& out) {
       << "min_edge_nodes," << o.edgeNodes.minEdgeNodes << '\n'
       << "adaptive_edge_nodes," << (o.edgeNodes.adaptive ? 1 : 0) << '\n'
       << "polish_stretch_weight," << o.untangling.polishStretchWeight << '\n'
+      << "flip_paths," << (o.flipPaths ? 1 : 0) << '\n'
+      << "greedy_flip_paths," << (o.greedyFlipPaths ? 1 : 0) << '\n'
       << "size_sweep_anchors," << kSizeSweepAnchors << '\n';
   if (!csv) {
     std::fprintf(stderr, "cbd_bench: cannot write %s\n", (out / "defaults.csv").c_str());
@@ -645,6 +687,7 @@ int main(int argc, char** argv) {
                  "       cbd_bench stress OUTDIR SETS_PER_COUNT N1,N2,...\n"
                  "       cbd_bench sensitivity ROOT MANIFEST OUTDIR R1,R2,...\n"
                  "       cbd_bench regions ROOT MANIFEST OUTDIR\n"
+                 "       cbd_bench flipping ROOT MANIFEST OUTDIR\n"
                  "       cbd_bench defaults OUTDIR\n"
                  "table: for every pair of the manifest, the greedy baseline and the Voronoi method (E1: one\n"
                  "edge node per edge; C: adaptive) -> OUTDIR/table.csv, OUTDIR/table.md; greedy and C also\n"
@@ -660,6 +703,8 @@ int main(int argc, char** argv) {
                  "regions: greedy and Voronoi C (defaults; final and composed map) on every pair of the\n"
                  "manifest, each source face's share of E_ang and of E_L2^2 summed per region of its nearest\n"
                  "anchor -> OUTDIR/regions.csv.\n"
+                 "flipping: greedy with and without its path flipping, Voronoi C without (the default) and with\n"
+                 "it (--flip-paths) on every pair of the manifest -> OUTDIR/flipping.csv.\n"
                  "defaults: cbd's default settings and the bench's constants that the report names\n"
                  "-> OUTDIR/defaults.csv.\n",
                  kSizeSweepAnchors);
@@ -677,6 +722,7 @@ int main(int argc, char** argv) {
     return sensitivity(argv[2], argv[3], argv[4], intList(argv[5]));
   }
   if (argc >= 5 && std::strcmp(argv[1], "regions") == 0) return regions(argv[2], argv[3], argv[4]);
+  if (argc >= 5 && std::strcmp(argv[1], "flipping") == 0) return flipping(argv[2], argv[3], argv[4]);
   if (argc >= 3 && std::strcmp(argv[1], "defaults") == 0) return defaults(argv[2]);
   return usage();
 }

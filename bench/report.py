@@ -25,6 +25,7 @@ full = rows(os.path.join(out, 'scaling_size', 'full.csv'))
 orders = rows(os.path.join(out, 'table_orders.csv'))
 sens = rows(os.path.join(out, 'sensitivity.csv'))
 regs = rows(os.path.join(out, 'regions.csv'))
+flips = rows(os.path.join(out, 'flipping.csv'))
 # cbd's defaults and the bench's constants as the binary that ran has them (`cbd_bench defaults`).
 defaults = {r['setting']: r['value'] for r in rows(os.path.join(out, 'defaults.csv'))}
 if readme and not defaults:
@@ -33,6 +34,8 @@ if readme and not defaults:
 ROUNDS = int(defaults.get('straighten_rounds', '-1'))
 B_NODES = defaults.get('min_edge_nodes', '?')
 W = float(defaults.get('polish_stretch_weight', 'nan'))
+FLIP_C = defaults.get('flip_paths') == '1'           # Voronoi method: path flipping by default
+FLIP_G = defaults.get('greedy_flip_paths', '1') == '1'  # greedy: its path flipping by default
 # The polish's objective, E_ang x E_L2^W, as the table heads and the text write it.
 PRODUCT = 'E_ang × E_L2' + ('²' if W == 2 else f'^{W:g}')
 
@@ -257,6 +260,43 @@ def md_regions():
             lines.append(f'| {p} | {metric} | {g:.4f} | {c:.4f} | {c - g:+.4f} ({dc:+.4f}) | {fmt(d[::-1][:3])} | {fmt(d[:3])} |')
     return '\n'.join(lines)
 
+def md_flipping():
+    """Greedy without and with its path flipping, Voronoi C without (cbd's default) and with it
+    (flipping.csv); per pair the final E_ang / E_L2 of each, and whether Voronoi C is lower than
+    greedy (both at cbd's defaults, then both flipped). The default runs must equal table.csv's
+    (the same code, deterministic): a flipping.csv from other code is not shown."""
+    if not flips:
+        return '(not in this run: `bench/run.sh` without `--quick` runs it)'
+    final = {(r['pair'], r['method']): r for r in table}
+    by = {}
+    for r in flips:
+        by.setdefault(r['pair'], {})[(r['method'], r['flip_paths'] == '1')] = r
+    dflt = lambda on: ' (default)' if on else ''
+    lines = [f'| pair | greedy, no flipping{dflt(not FLIP_G)} | greedy, flipping{dflt(FLIP_G)} | Voronoi C, no flipping{dflt(not FLIP_C)} | '
+             f'Voronoi C, flipping{dflt(FLIP_C)} | Voronoi C lower in both, defaults | Voronoi C lower in both, both flipping |',
+             '|---|---|---|---|---|---|---|']
+    both = {'defaults': 0, 'flipped': 0}
+    n = 0
+    for p, rs in by.items():
+        keys = [('greedy', False), ('greedy', True), ('voronoi-C', False), ('voronoi-C', True)]
+        if any(k not in rs for k in keys):
+            continue
+        for m, default in (('greedy', FLIP_G), ('voronoi-C', FLIP_C)):
+            t, f = final.get((p, m)), rs[(m, default)]
+            if not t or t['status'] != f['status'] or (t['status'] == 'ok' and any(
+                    abs(float(t[c]) - float(f[c])) > 1e-9 * max(1.0, abs(float(t[c]))) for c in ('e_ang', 'e_l2'))):
+                return f'(flipping.csv differs from table.csv for {p} {m} at cbd\'s defaults: not from the same code; re-run both)'
+        cell = lambda r: f"{float(r['e_ang']):.3f} / {float(r['e_l2']):.3f}" if r['status'] == 'ok' else 'failed'
+        def lower(c, g):
+            ok = c['status'] == 'ok' and g['status'] == 'ok'
+            return ok and float(c['e_ang']) < float(g['e_ang']) and float(c['e_l2']) < float(g['e_l2'])
+        d = lower(rs[('voronoi-C', FLIP_C)], rs[('greedy', FLIP_G)])
+        f = lower(rs[('voronoi-C', True)], rs[('greedy', True)])
+        both['defaults'] += d; both['flipped'] += f; n += 1
+        lines.append(f"| {p} | " + ' | '.join(cell(rs[k]) for k in keys) + f" | {'yes' if d else 'no'} | {'yes' if f else 'no'} |")
+    lines.append(f"| **pairs** | | | | | {both['defaults']} of {n} | {both['flipped']} of {n} |")
+    return 'E_ang / E_L2 of the final map, all else as cbd\'s defaults.\n\n' + '\n'.join(lines)
+
 def md_scaling(data, xcol):
     if not data:
         return '(not run)'
@@ -330,8 +370,8 @@ script and can be re-run alone. Reproduce everything from scratch with
 bash bench/run.sh
 ```
 
-(`--quick` for fewer scaling points and stress sets, one polish order, and neither the
-straightening sensitivity nor the regions). Inputs: `bench/manifest.txt` (real pairs
+(`--quick` for fewer scaling points and stress sets, one polish order, and none of the
+straightening sensitivity, the regions and the path flipping). Inputs: `bench/manifest.txt` (real pairs
 only: the bundled cow/bull in both directions, {shrec_note}, and pairs of Debian libcgal-demo meshes with the anchors in
 `bench/anchors/`). Every method runs on the same input in the same invocation; each run is a
 forked child process, so its peak resident memory (`getrusage`) is its own. Methods: **greedy**
@@ -414,6 +454,17 @@ table's metrics (checked here), so a difference between the methods splits into 
 from, and whether it was there before the untangling:
 
 {md_regions()}
+
+## What path flipping does for each method
+
+The greedy method ends with Kraevoy & Sheffer's path flipping (an edge replaced by the other
+diagonal of its two patches when that is shorter on both surfaces together), which the paper
+grants it for fairness; the Voronoi method's edges come from the dual of the anchors' Voronoi
+diagram{' and are flipped too by default' if FLIP_C else ' and are not flipped by default'}. `cbd_bench flipping` runs greedy without its flipping
+and Voronoi C with the same flipping (`--flip-paths`, `flipLayoutPaths` in
+`core/include/cbd/greedy_layout.h`, the same code), each run in its own process:
+
+{md_flipping()}
 
 ## The same with the paths as traced (the paper's protocol)
 

@@ -4,13 +4,14 @@
 #      baseline and the Voronoi method in its E1 (one edge node) and C (adaptive) settings;
 #      greedy and C also with two more polish vertex orders (the spread of the final numbers),
 #      and with 1, 4 and 8 rounds of path straightening besides the default 2 (sensitivity);
-#      and where on the source their maps differ (per-anchor regions);
+#      and where on the source their maps differ (per-anchor regions); and greedy without its
+#      path flipping, Voronoi C with it;
 #   2. scaling: layout time against anchors (on diplodocus) and against mesh size (the cow
 #      subdivided 1-to-4), both methods, next to one full Dijkstra sweep of the edge-node graph;
 #   3. random-anchor stress on synthetic genus 0/1/2 pairs;
 #   4. plots (gnuplot) and renders (cbd_render), and bench/README.md with every number from
 #      this run.
-# Usage: bench/run.sh [--quick]   (--quick: fewer scaling points and stress sets, one polish order, no straightening sensitivity, no regions)
+# Usage: bench/run.sh [--quick]   (--quick: fewer scaling points and stress sets, one polish order, no straightening sensitivity, no regions, no path flipping)
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 . "$ROOT/scripts/args.sh"
@@ -43,6 +44,13 @@ if [ "$QUICK" = 0 ]; then
   "$B" regions "$ROOT" "$ROOT/bench/manifest.txt" "$OUT" | tee "$OUT/regions.log"
 else
   rm -f "$OUT/regions.csv"
+fi
+
+if [ "$QUICK" = 0 ]; then
+  echo "== path flipping for each method"
+  "$B" flipping "$ROOT" "$ROOT/bench/manifest.txt" "$OUT" | tee "$OUT/flipping.log"
+else
+  rm -f "$OUT/flipping.csv"
 fi
 
 echo "== scaling"
