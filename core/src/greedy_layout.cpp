@@ -495,7 +495,7 @@ GreedyLayoutResult buildGreedyLayout(const IndexedMesh& S, const std::vector<int
   // 4. Path flipping.
   if (options.flipPaths) {
     r.flips = ed.flipPaths(nullptr);
-    if (r.flips < 0) return r.status = ed.status, r;
+    if (r.flips < 0) return r.flips = 0, r.status = ed.status, r;
   }
 
   // 5. Both layouts, patch k corresponding to patch k.

@@ -67,7 +67,8 @@ struct PathFlippingResult {
 /// again. A replaced edge becomes `EdgeKind::Flipped`; patches are assembled anew, patch k
 /// still corresponding to patch k. The layouts keep their meshes (paths cut in since stay
 /// split). Errors: InvalidArgument when the layouts are not a complete isomorphic pair;
-/// InternalError from the layout checks.
+/// InternalError from the layout checks (the layouts are then unusable: their meshes may hold
+/// paths their edges do not list).
 PathFlippingResult flipLayoutPaths(Layout& source, Layout& target, const EdgeNodeOptions& edgeNodes);
 
 }  // namespace cbd
