@@ -283,16 +283,20 @@ int table(const fs::path& root, const std::string& manifest, const fs::path& out
   return 0;
 }
 
-/// The default runs of greedy and Voronoi C once more with each of `rounds` rounds of path
-/// straightening (MapUntangleOptions and everything else as cbd's defaults): how far the final
-/// map moves with a post-processing setting that both methods share, against the difference
-/// between the methods. -> OUTDIR/sensitivity.csv.
-int sensitivity(const fs::path& root, const std::string& manifest, const fs::path& out, const std::vector<int>& rounds) {
+/// Every pair of the manifest with greedy and Voronoi C at cbd's defaults, each changed by
+/// `variants` (a label per variant and what it changes in the options), each run in its own
+/// process: one CSV row per run, `head` naming the columns, the variant's label third (in the
+/// log after `what`), then status, E_ang, E_L2, flipped, composed E_ang and E_L2, and `extra`
+/// columns before the error. What `sensitivity` and `flipping` share.
+using Variant = std::pair<std::string, std::function<void(CrossParameterizationOptions&)>>;
+int variantRuns(const fs::path& root, const std::string& manifest, const fs::path& csvPath, const std::string& head,
+                const std::string& what, const std::vector<Variant>& variants,
+                const std::function<std::string(const Run&)>& extra) {
   std::vector<Pair> pairs;
   if (!readManifest(root, manifest, pairs)) return 1;
-  fs::create_directories(out);
-  std::ofstream csv(out / "sensitivity.csv");
-  csv << "pair,method,straighten_rounds,status,e_ang,e_l2,flipped,e_ang_composed,e_l2_composed,t_total,error\n";
+  fs::create_directories(csvPath.parent_path());
+  std::ofstream csv(csvPath);
+  csv << head << '\n';
   for (const Pair& p : pairs) {
     LoadedPair lp;
     if (const std::string why = loadPair(p, lp); !why.empty()) {
@@ -301,62 +305,53 @@ int sensitivity(const fs::path& root, const std::string& manifest, const fs::pat
     }
     for (const Method& m : methods()) {
       if (m.name != "greedy" && m.name != "voronoi-C") continue;
-      for (int k : rounds) {
+      for (const Variant& v : variants) {
         CrossParameterizationOptions o = m.options;
-        o.straightening.rounds = k;
+        v.second(o);
         const Run r = runPair(lp, o);
-        csv << p.name << ',' << m.name << ',' << k << ',' << (r.ok ? "ok" : "failed") << ',' << r.eAng << ',' << r.eL2
-            << ',' << r.flipped << ',' << r.eAngRaw << ',' << r.eL2Raw << ',' << r.tTotal << ",\"" << r.error << "\"\n";
+        csv << p.name << ',' << m.name << ',' << v.first << ',' << (r.ok ? "ok" : "failed") << ',' << r.eAng << ','
+            << r.eL2 << ',' << r.flipped << ',' << r.eAngRaw << ',' << r.eL2Raw << ',' << extra(r) << ",\""
+            << r.error << "\"\n";
         csv.flush();
-        std::printf("%-22s %-10s straighten %d: %s E_ang %.3f E_L2 %.3f flipped %d (composed %.3f %.3f) total %.1fs %s\n",
-                    p.name.c_str(), m.name.c_str(), k, r.ok ? "ok    " : "FAILED", r.eAng, r.eL2, r.flipped, r.eAngRaw,
-                    r.eL2Raw, r.tTotal, r.ok ? "" : r.error.c_str());
+        std::printf("%-22s %-10s %s %s: %s E_ang %.3f E_L2 %.3f flipped %d (composed %.3f %.3f) layout %.3fs total %.1fs %s\n",
+                    p.name.c_str(), m.name.c_str(), what.c_str(), v.first.c_str(), r.ok ? "ok    " : "FAILED", r.eAng, r.eL2,
+                    r.flipped, r.eAngRaw, r.eL2Raw, r.tLayout, r.tTotal, r.ok ? "" : r.error.c_str());
         std::fflush(stdout);
       }
     }
   }
-  std::printf("wrote %s\n", (out / "sensitivity.csv").c_str());
+  std::printf("wrote %s\n", csvPath.c_str());
   return 0;
+}
+
+/// The default runs of greedy and Voronoi C once more with each of `rounds` rounds of path
+/// straightening (MapUntangleOptions and everything else as cbd's defaults): how far the final
+/// map moves with a post-processing setting that both methods share, against the difference
+/// between the methods. -> OUTDIR/sensitivity.csv.
+int sensitivity(const fs::path& root, const std::string& manifest, const fs::path& out, const std::vector<int>& rounds) {
+  std::vector<Variant> variants;
+  for (int k : rounds)
+    variants.push_back({std::to_string(k), [k](CrossParameterizationOptions& o) { o.straightening.rounds = k; }});
+  return variantRuns(root, manifest, out / "sensitivity.csv",
+                     "pair,method,straighten_rounds,status,e_ang,e_l2,flipped,e_ang_composed,e_l2_composed,t_total,error",
+                     "straighten", variants, [](const Run& r) { return (std::ostringstream() << r.tTotal).str(); });
 }
 
 /// What path flipping (greedy_layout.h, step 4) does for each method: greedy with and without
 /// its flipping, Voronoi C without (cbd's default) and with it (`flipLayoutPaths`), all else as
 /// cbd's defaults, each run in its own process -> OUTDIR/flipping.csv.
 int flipping(const fs::path& root, const std::string& manifest, const fs::path& out) {
-  std::vector<Pair> pairs;
-  if (!readManifest(root, manifest, pairs)) return 1;
-  fs::create_directories(out);
-  std::ofstream csv(out / "flipping.csv");
-  csv << "pair,method,flip_paths,status,e_ang,e_l2,flipped,e_ang_composed,e_l2_composed,t_layout,t_total,error\n";
-  for (const Pair& p : pairs) {
-    LoadedPair lp;
-    if (const std::string why = loadPair(p, lp); !why.empty()) {
-      std::printf("%-24s %s\n", p.name.c_str(), why.c_str());
-      continue;
-    }
-    for (const Method& m : methods()) {
-      if (m.name != "greedy" && m.name != "voronoi-C") continue;
-      for (bool flip : {false, true}) {
-        CrossParameterizationOptions o = m.options;
-        if (o.method == LayoutMethod::Greedy)
-          o.greedyFlipPaths = flip;
-        else
-          o.flipPaths = flip;
-        const Run r = runPair(lp, o);
-        csv << p.name << ',' << m.name << ',' << flip << ',' << (r.ok ? "ok" : "failed") << ',' << r.eAng << ','
-            << r.eL2 << ',' << r.flipped << ',' << r.eAngRaw << ',' << r.eL2Raw << ',' << r.tLayout << ',' << r.tTotal
-            << ",\"" << r.error << "\"\n";
-        csv.flush();
-        std::printf("%-22s %-10s flip paths %d: %s E_ang %.3f E_L2 %.3f flipped %d (composed %.3f %.3f) layout %.3fs "
-                    "total %.1fs %s\n",
-                    p.name.c_str(), m.name.c_str(), flip, r.ok ? "ok    " : "FAILED", r.eAng, r.eL2, r.flipped,
-                    r.eAngRaw, r.eL2Raw, r.tLayout, r.tTotal, r.ok ? "" : r.error.c_str());
-        std::fflush(stdout);
-      }
-    }
-  }
-  std::printf("wrote %s\n", (out / "flipping.csv").c_str());
-  return 0;
+  std::vector<Variant> variants;
+  for (bool flip : {false, true})
+    variants.push_back({flip ? "1" : "0", [flip](CrossParameterizationOptions& o) {
+                          if (o.method == LayoutMethod::Greedy)
+                            o.greedyFlipPaths = flip;
+                          else
+                            o.flipPaths = flip;
+                        }});
+  return variantRuns(root, manifest, out / "flipping.csv",
+                     "pair,method,flip_paths,status,e_ang,e_l2,flipped,e_ang_composed,e_l2_composed,t_layout,t_total,error",
+                     "flip paths", variants, [](const Run& r) { return (std::ostringstream() << r.tLayout << ',' << r.tTotal).str(); });
 }
 
 /// The source's faces by their geodesically nearest anchor (multi-source Dijkstra over the
