@@ -665,7 +665,7 @@ int main(int argc, char** argv) {
         ->capture_default_str()
         ->check(finiteRange(0.0, 1.0));
     cmd->add_flag("--flip-paths", r.flipPaths,
-                  "Voronoi method with a target: after both layouts are built, replace every path by the other diagonal of its two "
+                  "Voronoi method with a target: after both layouts are built, replace each path by the other diagonal of its two "
                   "patches when that is shorter on both surfaces together and both layouts stay consistent (the "
                   "greedy baseline's path flipping, which that method always does)")
         ->needs(t);

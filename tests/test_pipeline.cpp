@@ -114,12 +114,6 @@ TEST(Pipeline, CowToBullTakesTheBullsDiagramWhenTheCowsTwists) {
 }
 
 namespace {
-double surfaceArea(const IndexedMesh& m) {
-  double a = 0;
-  for (const auto& f : m.faces)
-    a += 0.5 * (m.positions[f[1]] - m.positions[f[0]]).cross(m.positions[f[2]] - m.positions[f[0]]).norm();
-  return a;
-}
 /// What path flipping lowers: the paths' lengths on both surfaces, each over sqrt(area).
 double flipCost(const Layout& s, const Layout& t, double areaS, double areaT) {
   double c = 0;

@@ -110,6 +110,22 @@ TEST(Voronoi, SixAxisAnchorsGiveTwelveCuts) {
   }
 }
 
+TEST(RefinedMesh, SurfaceAreaIsTheInputsAfterSplits) {
+  // Regular tetrahedron of edge 2 sqrt(2) scaled by 1.5: four faces of sqrt(3)/4 * (3 sqrt(2))^2.
+  const IndexedMesh m = fx::tetrahedron(Vec3(0.3, -2, 5), 1.5);
+  const double expected = 4 * std::sqrt(3.0) / 4 * 18;
+  EXPECT_NEAR(surfaceArea(m), expected, 1e-12 * expected);
+  RefinedMesh rm(m);
+  EXPECT_NEAR(surfaceArea(rm), expected, 1e-12 * expected);
+  // Splits cut faces in their planes: more faces, the same area.
+  const int faces = rm.faceCount();
+  for (double t : {0.5, 0.25, 0.8}) rm.splitEdge(0, t);
+  rm.splitEdge(rm.halfedgeCount() - 1, 0.4);
+  EXPECT_EQ(rm.faceCount(), faces + 8);
+  EXPECT_NEAR(surfaceArea(rm), expected, 1e-12 * expected);
+  EXPECT_EQ(surfaceArea(IndexedMesh{}), 0.0);
+}
+
 TEST(SourceLayout, OctahedronOnASphere) {
   const IndexedMesh m = fx::icosphere(3);
   std::vector<int> anchors;

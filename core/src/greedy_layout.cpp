@@ -18,22 +18,6 @@ double seconds(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
-double area(const IndexedMesh& m) {
-  double a = 0;
-  for (const auto& f : m.faces)
-    a += 0.5 * (m.positions[f[1]] - m.positions[f[0]]).cross(m.positions[f[2]] - m.positions[f[0]]).norm();
-  return a;
-}
-
-double area(const RefinedMesh& m) {
-  double a = 0;
-  for (int f = 0; f < m.faceCount(); ++f) {
-    const auto v = m.faceVertices(f);
-    a += 0.5 * (m.position(v[1]) - m.position(v[0])).cross(m.position(v[2]) - m.position(v[0])).norm();
-  }
-  return a;
-}
-
 bool cyclicEqual(std::vector<int> a, const std::vector<int>& b) {
   if (a.size() != b.size()) return false;
   if (a.empty()) return true;
@@ -129,6 +113,11 @@ struct PairEditor {
     if (!ps.found) return 0;
     const TracedPath pt = st.tracer.trace(qt);
     if (!pt.found) return 0;
+    return tryLinkTraced(id, ps, pt, a, b);
+  }
+
+  // The same for paths already traced on the current partial layouts.
+  int tryLinkTraced(int id, const TracedPath& ps, const TracedPath& pt, int a, int b) {
     // Cyclic order first, before anything is cut into the meshes: the two paths must leave
     // both anchors between the same existing edges.
     if (ss.tracer.sectorOf(ps, false) != st.tracer.sectorOf(pt, false) ||
@@ -188,12 +177,7 @@ struct PairEditor {
       };
       const int c = opposite(left), d = opposite(right);
       if (c < 0 || d < 0 || c == d || linked[c][d]) continue;
-      const double oldCost = edges[e].length / scale[0] + [&] {
-        double l = 0;
-        for (size_t k = 0; k + 1 < chains[1][e].size(); ++k)
-          l += (st.layout.mesh.position(chains[1][e][k + 1]) - st.layout.mesh.position(chains[1][e][k])).norm();
-        return l;
-      }() / scale[1];
+      const double oldCost = edges[e].length / scale[0] + chainLength(st.layout.mesh, chains[1][e]) / scale[1];
       const LayoutEdge old = edges[e];
       const std::vector<int> oldS = chains[0][e], oldT = chains[1][e];
       ss.tracer.release(oldS, e);
@@ -221,7 +205,7 @@ struct PairEditor {
       }
       const TracedPath ps = ss.tracer.trace(q[0]), pt = st.tracer.trace(q[1]);
       if (ps.found && pt.found && ps.length / scale[0] + pt.length / scale[1] < oldCost) {
-        const int res = tryLink(e, q[0], q[1], c, d);
+        const int res = tryLinkTraced(e, ps, pt, c, d);
         if (res < 0) return -1;
         ok = res == 1;
       }
@@ -311,7 +295,7 @@ GreedyLayoutResult buildGreedyLayout(const IndexedMesh& S, const std::vector<int
   }
 
   // 1. All-pairs shortest paths on both meshes, over the whole surfaces.
-  const double scale[2] = {std::sqrt(area(S)), std::sqrt(area(T))};
+  const double scale[2] = {std::sqrt(surfaceArea(S)), std::sqrt(surfaceArea(T))};
   std::vector<std::vector<double>> dist[2];
   for (int s = 0; s < 2; ++s) {
     dist[s].assign(na, std::vector<double>(na, std::numeric_limits<double>::infinity()));
@@ -521,7 +505,7 @@ PathFlippingResult flipLayoutPaths(Layout& source, Layout& target, const EdgeNod
   // has them, are the faces' labels, so that faces split by a new path keep their cluster.
   Side ss(source, edgeNodes), st(target, edgeNodes);
   Side* sides[2] = {&ss, &st};
-  PairEditor ed(ss, st, na, std::sqrt(area(source.mesh)), std::sqrt(area(target.mesh)));
+  PairEditor ed(ss, st, na, std::sqrt(surfaceArea(source.mesh)), std::sqrt(surfaceArea(target.mesh)));
   ed.edges = source.edges;
   for (int s = 0; s < 2; ++s) {
     const Layout& L = *layouts[s];

@@ -730,4 +730,11 @@ double boundingBoxDiagonal(const IndexedMesh& mesh) {
   return (hi - lo).norm();
 }
 
+double surfaceArea(const IndexedMesh& m) {
+  double a = 0;
+  for (const auto& f : m.faces)
+    a += 0.5 * (m.positions[f[1]] - m.positions[f[0]]).cross(m.positions[f[2]] - m.positions[f[0]]).norm();
+  return a;
+}
+
 }  // namespace cbd

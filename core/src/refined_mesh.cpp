@@ -160,4 +160,13 @@ IndexedMesh RefinedMesh::toIndexed() const {
   return out;
 }
 
+double surfaceArea(const RefinedMesh& m) {
+  double a = 0;
+  for (int f = 0; f < m.faceCount(); ++f) {
+    const auto v = m.faceVertices(f);
+    a += 0.5 * (m.position(v[1]) - m.position(v[0])).cross(m.position(v[2]) - m.position(v[0])).norm();
+  }
+  return a;
+}
+
 }  // namespace cbd

@@ -92,4 +92,7 @@ void fromIndexed(const IndexedMesh& in, Mesh& out);
 /// Axis-aligned bounding-box diagonal of the referenced and unreferenced vertices.
 double boundingBoxDiagonal(const IndexedMesh& mesh);
 
+/// Sum of the faces' areas.
+double surfaceArea(const IndexedMesh& mesh);
+
 }  // namespace cbd

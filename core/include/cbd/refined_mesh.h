@@ -101,4 +101,7 @@ class RefinedMesh {
   SplitRecord last_{};
 };
 
+/// Sum of the faces' areas (the input mesh's area up to rounding: splits keep faces planar).
+double surfaceArea(const RefinedMesh& mesh);
+
 }  // namespace cbd
