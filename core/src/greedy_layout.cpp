@@ -332,22 +332,20 @@ GreedyLayoutResult buildGreedyLayout(const IndexedMesh& S, const std::vector<int
     if (res < 0) r.status = ed.status;
     return res;
   };
-  auto newEdge = [&](EdgeKind kind) { return ed.newEdge(kind); };
-  auto dropLast = [&] { ed.dropLast(); };
 
   // 2. Trial and error in order of length.
   for (const Candidate& c : queue) {
     if (static_cast<int>(edges.size()) >= targetEdges) break;
     if (linked[c.i][c.j]) continue;
     ++r.tried;
-    const int id = newEdge(EdgeKind::Greedy);
+    const int id = ed.newEdge(EdgeKind::Greedy);
     PathQuery qs, qt;
     qs.source = ss.vertex(c.i), qs.goals.push_back({ss.vertex(c.j), {}, 0});
     qt.source = st.vertex(c.i), qt.goals.push_back({st.vertex(c.j), {}, 0});
     const int res = tryLink(id, qs, qt, c.i, c.j);
     if (res < 0) return r;
     if (res == 0) {
-      dropLast();
+      ed.dropLast();
       ++r.rejected;
       continue;
     }
@@ -439,7 +437,7 @@ GreedyLayoutResult buildGreedyLayout(const IndexedMesh& S, const std::vector<int
       };
       const RegionEnd *at = counterpart(a), *bt = counterpart(b);
       if (!at || !bt) continue;
-      const int id = newEdge(EdgeKind::Triangulation);
+      const int id = ed.newEdge(EdgeKind::Triangulation);
       PathQuery qs, qt;
       qs.source = ss.vertex(a.anchor), qs.sourceFaces = a.faces, qs.filter = {&labelS, bad, bad};
       qs.goals.push_back({ss.vertex(b.anchor), b.faces, 0});
@@ -452,7 +450,7 @@ GreedyLayoutResult buildGreedyLayout(const IndexedMesh& S, const std::vector<int
         done = true;
         break;
       }
-      dropLast();
+      ed.dropLast();
       ++r.completionRejected;
       // An attempt cut in and taken out again leaves the faces it split, inside the two
       // regions: label them so, and let the corner wedges hold them.
