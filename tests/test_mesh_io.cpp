@@ -436,3 +436,15 @@ TEST(MeshIO, FuzzRegressions) {
   write(d.file("lie.stl"), bin);
   EXPECT_EQ(loadMesh(d.file("lie.stl"), m).status.code, ErrorCode::MalformedMesh);
 }
+
+TEST(Mesh, ClosedEulerCharacteristicIsTwoMinusTwiceTheGenusOverUsedVertices) {
+  EXPECT_EQ(closedEulerCharacteristic(fx::icosphere(2)), 2);
+  EXPECT_EQ(closedEulerCharacteristic(fx::torus(2.0, 0.7, 30, 12)), 0);
+  const IndexedMesh plate = fx::holedPlate(3, 2, 5);
+  EXPECT_EQ(closedEulerCharacteristic(plate), validateMesh(plate, "plate").eulerCharacteristic);
+  EXPECT_EQ(closedEulerCharacteristic(plate), -4);
+  // A vertex no face uses does not count.
+  IndexedMesh extra = fx::icosphere(1);
+  extra.positions.push_back(Vec3(5, 5, 5));
+  EXPECT_EQ(closedEulerCharacteristic(extra), 2);
+}

@@ -229,6 +229,49 @@ TEST(SourceLayout, ALinkAlongASideOfAHandleRegionIsTakenBackNotRetracedForever) 
   }
 }
 
+TEST(SourceLayout, MorePathsThanTheCapAllowsFailBeforeAnySearch) {
+  // A finished layout has 3 (anchors - 2 + 2 genus) paths (a triangulation with the anchors for
+  // vertices), so when the cut paths leave more to add than maxTriangulationPaths, the layout
+  // fails at once, naming the counts, instead of searching until the cap (cheese, genus 133,
+  // 12 anchors: minutes of links taken back).
+  const IndexedMesh m = fx::holedPlate(2, 4, 20);
+  ASSERT_EQ(validateMesh(m, "dt").genus, 2);
+  const std::vector<int> anchors = farthestPoints(m, 16);
+  const SourceLayoutResult full = buildSourceLayout(m, anchors);
+  expectValid(full, m, 16);  // 54 paths
+  ASSERT_GE(full.triangulationPaths, 1);
+  // The cap at what the layout took: the same layout.
+  SourceLayoutOptions exact;
+  exact.maxTriangulationPaths = full.triangulationPaths;
+  const SourceLayoutResult same = buildSourceLayout(m, anchors, exact);
+  expectValid(same, m, 16);
+  EXPECT_EQ(same.triangulationPaths, full.triangulationPaths);
+  // One below what even a layout that drops no cut path needs: no path is searched.
+  SourceLayoutOptions tight;
+  tight.maxTriangulationPaths = 54 - full.cutPaths - 1;
+  const SourceLayoutResult r = buildSourceLayout(m, anchors, tight);
+  EXPECT_EQ(r.status.code, ErrorCode::LayoutFailed);
+  EXPECT_NE(r.status.message.find("16 anchors on a genus-2 surface has 3 x (anchors - 2 + 2 x genus) = 54 paths; "
+                                  "the Voronoi cuts gave " + std::to_string(full.cutPaths)),
+            std::string::npos)
+      << r.status.message;
+  EXPECT_NE(r.status.message.find("add anchors"), std::string::npos) << r.status.message;
+  EXPECT_EQ(r.triangulationPaths, 0);
+  EXPECT_EQ(r.rejectedPaths, 0);
+  EXPECT_EQ(r.cutPaths, full.cutPaths);
+  // With the default cap (4 x anchors + 64): a genus-16 plate with 4 anchors needs 102 paths,
+  // the cuts give far fewer than the 22 that would leave 80 to add.
+  const IndexedMesh g16 = fx::holedPlate(16, 2, 5);
+  ASSERT_EQ(validateMesh(g16, "g16").genus, 16);
+  const SourceLayoutResult d = buildSourceLayout(g16, farthestPoints(g16, 4));
+  EXPECT_EQ(d.status.code, ErrorCode::LayoutFailed);
+  EXPECT_NE(d.status.message.find("= 102 paths"), std::string::npos) << d.status.message;
+  EXPECT_NE(d.status.message.find("at most 80 more may triangulate the rest (4 x anchors + 64)"), std::string::npos)
+      << d.status.message;
+  EXPECT_EQ(d.triangulationPaths, 0);
+  EXPECT_LT(d.cutPaths, 22);
+}
+
 TEST(SourceLayout, ManyAnchorsOnASphere) {
   const IndexedMesh m = fx::icosphere(4);
   const std::vector<int> anchors = farthestPoints(m, 40);

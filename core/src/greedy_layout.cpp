@@ -267,14 +267,7 @@ GreedyLayoutResult buildGreedyLayout(const IndexedMesh& S, const std::vector<int
   Side* sides[2] = {&ss, &st};
 
   // Euler characteristic of the surface and the edge count of a complete layout.
-  int referenced = 0;
-  {
-    std::vector<char> used(S.vertexCount(), 0);
-    for (const auto& f : S.faces)
-      for (int v : f) used[v] = 1;
-    for (char u : used) referenced += u;
-  }
-  const int chi = referenced - 3 * S.faceCount() / 2 + S.faceCount();
+  const int chi = closedEulerCharacteristic(S);
   const int targetEdges = 3 * (na - chi);  // E = 3(n - 2 + 2g)
   // The method links a pair of anchors at most once, so a layout has at most n(n-1)/2 edges:
   // with fewer anchors than that allows (Heawood's bound, n >= (7 + sqrt(1 + 48g)) / 2 for

@@ -737,4 +737,12 @@ double surfaceArea(const IndexedMesh& m) {
   return a;
 }
 
+int closedEulerCharacteristic(const IndexedMesh& m) {
+  std::vector<char> used(m.vertexCount(), 0);
+  for (const auto& f : m.faces)
+    for (int v : f) used[v] = 1;
+  const int referenced = static_cast<int>(std::count(used.begin(), used.end(), 1));
+  return referenced - m.faceCount() / 2;
+}
+
 }  // namespace cbd

@@ -116,12 +116,36 @@ SourceLayoutResult buildSourceLayout(const IndexedMesh& input, const std::vector
   }
 
   // 2. Triangulate every region that is not a triangle, with paths searched inside it.
+  const int maxExtra = options.maxTriangulationPaths >= 0 ? options.maxTriangulationPaths : 4 * na + 64;
+  // A finished base domain is a triangulation of the surface with the anchors for vertices
+  // (multiple linkages allowed, no loops): V - E + F = chi and 3F = 2E, so it has exactly
+  // 3 (anchors - chi) paths. Every path the triangulation adds counts against `maxExtra`,
+  // even one later dropped with an empty 2-gon, so when the cut paths leave more than that to
+  // add, the layout cannot be finished: say so now instead of searching until the cap is hit
+  // (cheese, genus 133, with 12 anchors: 732 paths left to add against 112 allowed; the search
+  // ran past 15 minutes, taking back link after link, its refined mesh growing threefold in the
+  // first minute).
+  {
+    const int chi = closedEulerCharacteristic(input);
+    const int needed = 3 * (na - chi);
+    if (needed - r.cutPaths > maxExtra) {
+      const int genus = (2 - chi) / 2;
+      r.status = Status::error(
+          ErrorCode::LayoutFailed,
+          "the source layout cannot be completed: a base domain with " + std::to_string(na) + " anchors on a genus-" +
+              std::to_string(genus) + " surface has 3 x (anchors - 2 + 2 x genus) = " + std::to_string(needed) +
+              " paths; the Voronoi cuts gave " + std::to_string(r.cutPaths) + ", and at most " +
+              std::to_string(maxExtra) + " more may triangulate the rest" +
+              (options.maxTriangulationPaths >= 0 ? std::string() : std::string(" (4 x anchors + 64)")) + "; add anchors");
+      r.layoutSeconds = seconds(t0);
+      return r;
+    }
+  }
   std::vector<int> anchorOf;
   auto refreshAnchorOf = [&] {
     anchorOf.assign(L.mesh.vertexCount(), -1);
     for (int i = 0; i < na; ++i) anchorOf[anchors[i]] = i;
   };
-  const int maxExtra = options.maxTriangulationPaths >= 0 ? options.maxTriangulationPaths : 4 * na + 64;
   // The regions, analysed once and then updated where each path was cut in; regions are taken
   // in the order of their lowest face, as a fresh analysis would number them.
   RegionMap rm;

@@ -95,4 +95,8 @@ double boundingBoxDiagonal(const IndexedMesh& mesh);
 /// Sum of the faces' areas.
 double surfaceArea(const IndexedMesh& mesh);
 
+/// V - E + F of a closed triangle mesh (every edge on two faces, so E = 3F/2), over the
+/// vertices some face uses: 2 - 2 genus for a closed connected surface.
+int closedEulerCharacteristic(const IndexedMesh& mesh);
+
 }  // namespace cbd

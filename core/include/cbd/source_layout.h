@@ -17,7 +17,10 @@ namespace cbd {
 /// Options of `buildSourceLayout`.
 struct SourceLayoutOptions {
   EdgeNodeOptions edgeNodes;        ///< b = 3 adaptive (the paper's C); b = 1 fixed is E1
-  int maxTriangulationPaths = -1;   ///< cap on extra paths; -1: 4 * anchors + 64
+  /// Cap on the paths added to triangulate the regions the cut paths leave; -1: 4 * anchors + 64.
+  /// A finished layout has 3 (anchors - 2 + 2 genus) paths, so when the cut paths leave more
+  /// than this to add, the layout fails (LayoutFailed, with those counts) before any search.
+  int maxTriangulationPaths = -1;
   std::vector<std::string> anchorNames;  ///< for messages (`anchorLabel`); empty: by position
 };
 
