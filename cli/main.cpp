@@ -34,6 +34,7 @@ json meshJson(const cbd::MeshReport& m) {
               {"genus", m.genus},
               {"unreferenced_vertices", m.unreferencedVertices},
               {"bbox_diagonal", m.bboxDiagonal},
+              {"enclosed_volume", m.enclosedVolume},
               {"warnings", m.warnings}};
 }
 

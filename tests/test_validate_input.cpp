@@ -213,6 +213,39 @@ TEST(ValidateInput, GenusMismatch) {
   EXPECT_NE(r.status.message.find("genus 1"), std::string::npos);
 }
 
+static IndexedMesh reversed(IndexedMesh m) {
+  for (auto& f : m.faces) std::swap(f[1], f[2]);
+  return m;
+}
+
+TEST(ValidateInput, OneSurfaceInsideOutIsAnOrientationMismatch) {
+  // The enclosed volume, signed by the faces' orientation: a unit icosphere's is just under
+  // 4/3 pi (its flat faces lie inside the sphere), the reversed one's its negative.
+  const IndexedMesh s = fx::icosphere(3), in = reversed(s);
+  const MeshReport out = validateMesh(s, "s"), inv = validateMesh(in, "in");
+  ASSERT_TRUE(out.status.ok() && inv.status.ok());
+  EXPECT_LT(out.enclosedVolume, 4.0 / 3.0 * M_PI);
+  EXPECT_GT(out.enclosedVolume, 0.97 * 4.0 / 3.0 * M_PI);
+  EXPECT_NEAR(inv.enclosedVolume, -out.enclosedVolume, 1e-9);
+  // A torus of radii 2 and 0.5: 2 pi^2 R r^2 = pi^2, less by the facets.
+  const MeshReport torus = validateMesh(fx::torus(2, 0.5, 60, 30), "torus");
+  EXPECT_GT(torus.enclosedVolume, 0.97 * M_PI * M_PI);
+  EXPECT_LT(torus.enclosedVolume, M_PI * M_PI);
+  const MeshReport plate = validateMesh(fx::holedPlate(3, 2, 5), "plate");
+  EXPECT_GT(plate.enclosedVolume, 0);
+
+  const InputReport r = validateInput(in, s, namedAt(in, {0, 1, 2}, "a"), namedAt(s, {0, 1, 2}, "a"));
+  EXPECT_EQ(r.status.code, ErrorCode::OrientationMismatch);
+  EXPECT_NE(r.status.message.find("the source mesh's faces point inward"), std::string::npos) << r.status.message;
+  EXPECT_NE(r.status.message.find("Invert Faces Orientation"), std::string::npos) << r.status.message;
+  const InputReport t = validateInput(s, in, namedAt(s, {0, 1, 2}, "a"), namedAt(in, {0, 1, 2}, "a"));
+  EXPECT_EQ(t.status.code, ErrorCode::OrientationMismatch);
+  EXPECT_NE(t.status.message.find("the target mesh's faces point inward"), std::string::npos) << t.status.message;
+  // Both inside out: the orientations agree, and the pair is processed.
+  const InputReport both = validateInput(in, in, namedAt(in, {0, 1, 2}, "a"), namedAt(in, {0, 1, 2}, "a"));
+  EXPECT_TRUE(both.status.ok()) << both.status.message;
+}
+
 TEST(ValidateInput, TooFewAnchors) {
   const IndexedMesh s = fx::icosphere(2);
   const InputReport r = validateInput(s, s, namedAt(s, {0, 1}, "s"), namedAt(s, {0, 1}, "t"));

@@ -33,6 +33,7 @@ const char* errorCodeName(ErrorCode code) {
     case ErrorCode::TooManyAnchors: return "too_many_anchors";
     case ErrorCode::LayoutFailed: return "layout_failed";
     case ErrorCode::InternalError: return "internal_error";
+    case ErrorCode::OrientationMismatch: return "orientation_mismatch";
   }
   return "internal_error";
 }
@@ -66,12 +67,13 @@ const char* errorCodeDescription(ErrorCode code) {
     case ErrorCode::TooManyAnchors: return "more anchors than the smaller mesh has vertices";
     case ErrorCode::LayoutFailed: return "a common base domain could not be completed";
     case ErrorCode::InternalError: return "a broken invariant: a bug, please report it";
+    case ErrorCode::OrientationMismatch: return "one surface's faces point outward, the other's inward";
   }
   return "";
 }
 
 const ErrorCode* allErrorCodes(int& count) {
-  static const ErrorCode codes[] = {ErrorCode::Ok, ErrorCode::InvalidArgument, ErrorCode::FileNotFound, ErrorCode::UnsupportedFormat, ErrorCode::MalformedMesh, ErrorCode::OutputError, ErrorCode::EmptyMesh, ErrorCode::NotTriangles, ErrorCode::InvalidCoordinates, ErrorCode::DegenerateFace, ErrorCode::DuplicateFace, ErrorCode::OpenBoundary, ErrorCode::NonManifoldEdge, ErrorCode::NonManifoldVertex, ErrorCode::InconsistentOrientation, ErrorCode::MultipleComponents, ErrorCode::GenusMismatch, ErrorCode::MalformedAnchors, ErrorCode::AnchorNameMismatch, ErrorCode::DuplicateAnchorName, ErrorCode::AnchorIndexOutOfRange, ErrorCode::AnchorOffSurface, ErrorCode::AnchorsShareVertex, ErrorCode::TooFewAnchors, ErrorCode::TooManyAnchors, ErrorCode::LayoutFailed, ErrorCode::InternalError};
+  static const ErrorCode codes[] = {ErrorCode::Ok, ErrorCode::InvalidArgument, ErrorCode::FileNotFound, ErrorCode::UnsupportedFormat, ErrorCode::MalformedMesh, ErrorCode::OutputError, ErrorCode::EmptyMesh, ErrorCode::NotTriangles, ErrorCode::InvalidCoordinates, ErrorCode::DegenerateFace, ErrorCode::DuplicateFace, ErrorCode::OpenBoundary, ErrorCode::NonManifoldEdge, ErrorCode::NonManifoldVertex, ErrorCode::InconsistentOrientation, ErrorCode::MultipleComponents, ErrorCode::GenusMismatch, ErrorCode::MalformedAnchors, ErrorCode::AnchorNameMismatch, ErrorCode::DuplicateAnchorName, ErrorCode::AnchorIndexOutOfRange, ErrorCode::AnchorOffSurface, ErrorCode::AnchorsShareVertex, ErrorCode::TooFewAnchors, ErrorCode::TooManyAnchors, ErrorCode::LayoutFailed, ErrorCode::InternalError, ErrorCode::OrientationMismatch};
   count = static_cast<int>(sizeof(codes) / sizeof(codes[0]));
   return codes;
 }

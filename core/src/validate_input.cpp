@@ -285,6 +285,14 @@ MeshReport validateMesh(const IndexedMesh& mesh, const std::string& name, bool h
 
   r.eulerCharacteristic = r.vertices - r.edges + r.faces;
   r.genus = (2 - r.eulerCharacteristic) / 2;
+  // Signed enclosed volume (divergence theorem), about the first vertex for less cancellation.
+  {
+    const Vec3 o = mesh.positions[mesh.faces[0][0]];
+    double v6 = 0;
+    for (const auto& f : mesh.faces)
+      v6 += (mesh.positions[f[0]] - o).dot((mesh.positions[f[1]] - o).cross(mesh.positions[f[2]] - o));
+    r.enclosedVolume = v6 / 6.0;
+  }
   return r;
 }
 
@@ -312,6 +320,27 @@ InputReport validateInput(const IndexedMesh& source, const IndexedMesh& target,
                                  " and the target mesh genus " + std::to_string(r.target.genus) +
                                  "; a cross-parameterization needs surfaces of the same topology");
     return r;
+  }
+  // Faces outward on one surface and inward on the other (an inside-out export): the layouts'
+  // cyclic orders around the anchors disagree everywhere and the map folds over (cow -> bull
+  // with the cow inside out ran past 180 s in the untangling and ended with about a thousand
+  // flipped triangles). A volume within rounding of 0 says nothing and is let through.
+  {
+    auto sign = [](const MeshReport& m) {
+      const double scale = m.bboxDiagonal * m.bboxDiagonal * m.bboxDiagonal;
+      return std::abs(m.enclosedVolume) <= 1e-9 * scale ? 0 : (m.enclosedVolume > 0 ? 1 : -1);
+    };
+    const int s = sign(r.source), t = sign(r.target);
+    if (s * t < 0) {
+      const bool sourceInward = s < 0;
+      r.status = Status::error(
+          ErrorCode::OrientationMismatch,
+          std::string("the ") + (sourceInward ? "source" : "target") + " mesh's faces point inward (it encloses a " +
+              "negative volume) and the " + (sourceInward ? "target" : "source") + " mesh's outward; invert the " +
+              (sourceInward ? "source" : "target") +
+              "'s faces (MeshLab: Filters > Normals, Curvatures and Orientation > Invert Faces Orientation)");
+      return r;
+    }
   }
   if (!sourceAnchors.status) return r.status = sourceAnchors.status, r;
   if (!targetAnchors.status) return r.status = targetAnchors.status, r;

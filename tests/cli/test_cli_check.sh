@@ -167,6 +167,9 @@ expect nonmanifold_edge     non_manifold_edge    -- --source fan.off --target oc
 expect orientation          inconsistent_orientation -- --source flipped.off --target octa.off "${P[@]}"
 expect components           multiple_components  -- --source two.off --target octa.off "${P[@]}"
 expect genus                genus_mismatch       -- --source octa.off --target torus.off --source-anchors octa_idx.vts --target-anchors torus.vts
+awk 'NF == 4 && $1 == 3 { print 3, $2, $4, $3; next } { print }' octa.off > inside_out.off  # every face reversed
+expect inside_out           orientation_mismatch -- --source inside_out.off --target octa.off "${P[@]}"
+expect both_inside_out      ok                   -- --source inside_out.off --target inside_out.off "${P[@]}"
 expect malformed_pp         malformed_anchors    -- --source octa.off --target octa.off --source-anchors malformed.pp --target-anchors octa.txt
 expect name_mismatch        anchor_name_mismatch -- --source octa.off --target octa.off --source-anchors octa.txt --target-anchors octa_wrong.txt
 expect duplicate_name       duplicate_anchor_name -- --source octa.off --target octa.off --source-anchors octa_dup.txt --target-anchors octa.txt

@@ -40,7 +40,9 @@ enum class ErrorCode {
   TooManyAnchors,        ///< more anchors than the smaller mesh has vertices
   // algorithm
   LayoutFailed,          ///< a common base domain could not be completed
-  InternalError          ///< a broken invariant: a bug, please report it
+  InternalError,         ///< a broken invariant: a bug, please report it
+  // Added after the first release: appended, so that no earlier exit code moves.
+  OrientationMismatch    ///< one surface's faces point outward, the other's inward
 };
 
 /// Outcome of a stage: `code == Ok` or a message naming the problem and the fix.

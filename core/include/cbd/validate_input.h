@@ -33,6 +33,9 @@ struct MeshReport {
   int eulerCharacteristic = 0;    ///< V - E + F over referenced vertices
   int genus = -1;                 ///< (2 - chi) / 2 for a closed connected surface, else -1
   double bboxDiagonal = 0.0;
+  /// Volume the surface encloses, signed by its faces' orientation: > 0 when they point
+  /// outward (counter-clockwise seen from outside), < 0 when inward (set when status is ok).
+  double enclosedVolume = 0.0;
   std::vector<std::string> warnings;
 };
 
@@ -65,6 +68,7 @@ struct InputFiles {
 };
 
 /// Check a source/target pair with its anchors: both meshes valid, same genus (GenusMismatch),
+/// faces outward on both or inward on both (OrientationMismatch, by `enclosedVolume`),
 /// anchors matched by name (`matchAnchors`), snapped within tolerance (`snapAnchors`), at least
 /// three (TooFewAnchors) and no more than the smaller mesh has vertices (TooManyAnchors).
 /// The meshes are not modified.
