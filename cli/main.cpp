@@ -326,7 +326,8 @@ json layoutJson(const cbd::LayoutPair& p) {
   json l = {{"edges", p.source.edges.size()},
             {"patches", p.source.patches.size()},
             {"multi_linkages", p.source.multipleLinkages()},
-            {"detour", p.detour}};
+            {"detour", p.detour},
+            {"warnings", p.warnings}};
   if (p.method == cbd::LayoutMethod::Voronoi) {
     // "diagram": whose Voronoi diagram gave the layout (the target's when the source's detoured).
     l["diagram"] = p.reversed ? "target" : "source";
@@ -359,6 +360,7 @@ json timesJson(const cbd::StageTimes& t) {
 }
 
 void printLayout(const cbd::LayoutPair& p) {
+  for (const auto& w : p.warnings) std::fprintf(stderr, "cbd: warning: %s\n", w.c_str());
   if (p.method == cbd::LayoutMethod::Voronoi) {
     std::printf("layout  voronoi: %zu edges (%d across Voronoi cuts, %d triangulating), %zu patches, %d multiple linkages\n",
                 p.source.edges.size(), p.sourceStats.cutPaths - p.sourceStats.removedPaths,

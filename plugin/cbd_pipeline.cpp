@@ -264,6 +264,7 @@ cbd::Status runPipeline(const PipelineRequest& rq, vcg::CallBackPos* cb) {
 
     log(anchorList(rq.report));
     log(layoutLine(p));
+    for (const auto& w : p.warnings) log("warning: " + w);
     log(timesLine(p.times, false));
     log(std::string("layers ") + layerName(rq.sourceLayer) + " and " + layerName(rq.targetLayer) +
         " coloured per face by " + (byCluster ? "Voronoi cluster (" : "patch (") +
@@ -336,6 +337,7 @@ cbd::Status runPipeline(const PipelineRequest& rq, vcg::CallBackPos* cb) {
 
   log(anchorList(rq.report));
   log(layoutLine(r.layouts));
+  for (const auto& w : r.layouts.warnings) log("warning: " + w);
   if (o.straightenRounds > 0 && r.straightenFailed)
     log("straighten: failed (" +
         (!r.straightenSource.status ? r.straightenSource.status : r.straightenTarget.status).message +

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdio>
 #include <thread>
 
 namespace cbd {
@@ -91,15 +92,18 @@ LayoutPair buildLayouts(const IndexedMesh& source, const std::vector<int>& sa, c
       const StageTimes first = p.times;
       LayoutPair q = voronoiLayouts(target, ta, source, sa, euler, options);
       const StageTimes second = q.times;
-      if (q.status && (!p.status || q.detour < p.detour)) {
+      // Both detours measured source -> target (the measure is not quite symmetric: the median
+      // of an even count of ratios), so that the one kept is the lower as reported.
+      const double reverse = q.status ? lengthDetour(q.target, q.source) : 0.0;
+      if (q.status && (!p.status || reverse < p.detour)) {
         const double forwardDetour = p.status ? p.detour : 0.0;
         p = std::move(q);
         std::swap(p.source, p.target);
         p.reversed = true;
         p.reverseDetour = forwardDetour;
-        p.detour = lengthDetour(p.source, p.target);
+        p.detour = reverse;
       } else {
-        p.reverseDetour = q.status ? lengthDetour(q.target, q.source) : 0.0;
+        p.reverseDetour = reverse;
       }
       p.triedReverse = true;
       p.times.voronoi = first.voronoi + second.voronoi;
@@ -125,6 +129,15 @@ LayoutPair buildLayouts(const IndexedMesh& source, const std::vector<int>& sa, c
   if (p.method == LayoutMethod::Voronoi) unchecked = p.sameSurface ? nullptr : p.reversed ? &p.source : &p.target;
   if (unchecked)
     if (const LayoutCheck c = validateLayout(*unchecked, euler); !c.status) return p.status = c.status, p;
+  if (options.detourWarning > 0 && p.detour > options.detourWarning && !p.sameSurface) {
+    char d[32];
+    std::snprintf(d, sizeof d, "%.2f", p.detour);
+    p.warnings.push_back(std::string("the target layout's paths detour ") + d +
+                         " (their lengths against the source's; matching anchors on real pairs give 1.2-1.7" +
+                         (p.triedReverse ? ", and both surfaces' Voronoi diagrams were tried" : "") +
+                         "): check that the anchors correspond in shape, not only in name (left and right "
+                         "swapped?); the map may fold over and its untangling take minutes");
+  }
   return p;
 }
 
