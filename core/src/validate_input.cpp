@@ -332,13 +332,12 @@ InputReport validateInput(const IndexedMesh& source, const IndexedMesh& target,
     };
     const int s = sign(r.source), t = sign(r.target);
     if (s * t < 0) {
-      const bool sourceInward = s < 0;
-      r.status = Status::error(
-          ErrorCode::OrientationMismatch,
-          std::string("the ") + (sourceInward ? "source" : "target") + " mesh's faces point inward (it encloses a " +
-              "negative volume) and the " + (sourceInward ? "target" : "source") + " mesh's outward; invert the " +
-              (sourceInward ? "source" : "target") +
-              "'s faces (MeshLab: Filters > Normals, Curvatures and Orientation > Invert Faces Orientation)");
+      const std::string inward = s < 0 ? "source" : "target", outward = s < 0 ? "target" : "source";
+      r.status = Status::error(ErrorCode::OrientationMismatch,
+                               "the " + inward + " mesh's faces point inward (it encloses a negative volume) and the " +
+                                   outward + " mesh's outward; invert the " + inward +
+                                   "'s faces (MeshLab: Filters > Normals, Curvatures and Orientation > Invert Faces "
+                                   "Orientation)");
       return r;
     }
   }

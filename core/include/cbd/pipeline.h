@@ -39,7 +39,7 @@ struct CrossParameterizationOptions {
   /// When the layouts kept detour more than this (`LayoutPair::detour`), `LayoutPair::warnings`
   /// says the anchors may not correspond in shape. On the 8 bench pairs the layouts kept detour
   /// 1.23-1.65 with either method; cow -> bull with the bull's anchors swapped left for right
-  /// 2.29 (Voronoi, both diagrams tried) and 1.89 (greedy). 0: never.
+  /// 2.27 (Voronoi, both diagrams tried) and 1.89 (greedy). 0: never.
   double detourWarning = 1.8;
   /// Voronoi method: the greedy baseline's path flipping (`flipLayoutPaths`) applied to its
   /// layouts too, after they are built (the baseline always flips, as the paper grants it).
