@@ -1,5 +1,5 @@
 #include "cbd/distortion.h"
-#include "cbd/map_untangle.h"
+#include "cbd/target_normals.h"
 
 #include <cmath>
 

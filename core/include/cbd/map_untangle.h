@@ -47,6 +47,7 @@
 
 #include "cbd/mesh.h"
 #include "cbd/parameterization.h"
+#include "cbd/target_normals.h"
 
 namespace cbd {
 
@@ -131,38 +132,12 @@ struct MapUntangleResult {
   int attempts = 0;       ///< runs of the whole untangling (0: there was no flip)
 };
 
-/// The target's surface normals where image points lie, for the flip count of the metrics. A
-/// point inside a face has that face's normal. A point on an edge or at a vertex (a barycentric
-/// coordinate below 1e-9) has the normals of every face touching it (the normal cone of a
-/// crease or corner), and a triangle is measured against the one closest to its own: so the
-/// identity map of a mesh with sharp creases has no flipped triangle, while a triangle folded
-/// over a face still is.
-class TargetNormals {
- public:
-  explicit TargetNormals(const IndexedMesh& target);
-  const std::vector<Vec3>& faceNormals() const { return normal_; }
-  /// Of the normals at p, the one most aligned with n (zero when p is on no face).
-  Vec3 closestAt(const FacePoint& p, const Vec3& n) const;
-  /// Whether the image triangle (i0, i1, i2), whose corners lie at p0, p1, p2 on the target,
-  /// is flipped: its normal points against the sum of the target normals at its corners.
-  bool flipped(const Vec3& i0, const Vec3& i1, const Vec3& i2, const FacePoint& p0, const FacePoint& p1,
-               const FacePoint& p2) const;
-
- private:
-  const IndexedMesh& mesh_;
-  std::vector<Vec3> normal_;
-  std::vector<int> starBegin_, star_;  // faces around each vertex (CSR)
-};
-
 /// The untangling's own, stricter test: the image triangle's normal points against the sum of
 /// the normals of the target faces its three corners were located in (at a corner on an edge
 /// or vertex, one of the faces touching it). Whatever it passes, `TargetNormals::flipped`
 /// passes. `targetFaceNormal` holds the unit normal of every target face.
 bool imageFlipped(const Vec3& i0, const Vec3& i1, const Vec3& i2, const std::vector<Vec3>& targetFaceNormal,
                   int face0, int face1, int face2);
-
-/// Unit normals of the faces of `mesh` (zero for a degenerate face).
-std::vector<Vec3> faceNormals(const IndexedMesh& mesh);
 
 /// The restart of `anchorRestartRings`: lays the disk of `rings` source rings round `anchor` out
 /// anew round the anchor's image (the source's disk flattened into the anchor's tangent plane,
