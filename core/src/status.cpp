@@ -34,6 +34,7 @@ const char* errorCodeName(ErrorCode code) {
     case ErrorCode::LayoutFailed: return "layout_failed";
     case ErrorCode::InternalError: return "internal_error";
     case ErrorCode::OrientationMismatch: return "orientation_mismatch";
+    case ErrorCode::Cancelled: return "cancelled";
   }
   return "internal_error";
 }
@@ -68,12 +69,13 @@ const char* errorCodeDescription(ErrorCode code) {
     case ErrorCode::LayoutFailed: return "a common base domain could not be completed";
     case ErrorCode::InternalError: return "a broken invariant: a bug, please report it";
     case ErrorCode::OrientationMismatch: return "one surface's faces point outward, the other's inward";
+    case ErrorCode::Cancelled: return "the run was cancelled; nothing was written";
   }
   return "";
 }
 
 const ErrorCode* allErrorCodes(int& count) {
-  static const ErrorCode codes[] = {ErrorCode::Ok, ErrorCode::InvalidArgument, ErrorCode::FileNotFound, ErrorCode::UnsupportedFormat, ErrorCode::MalformedMesh, ErrorCode::OutputError, ErrorCode::EmptyMesh, ErrorCode::NotTriangles, ErrorCode::InvalidCoordinates, ErrorCode::DegenerateFace, ErrorCode::DuplicateFace, ErrorCode::OpenBoundary, ErrorCode::NonManifoldEdge, ErrorCode::NonManifoldVertex, ErrorCode::InconsistentOrientation, ErrorCode::MultipleComponents, ErrorCode::GenusMismatch, ErrorCode::MalformedAnchors, ErrorCode::AnchorNameMismatch, ErrorCode::DuplicateAnchorName, ErrorCode::AnchorIndexOutOfRange, ErrorCode::AnchorOffSurface, ErrorCode::AnchorsShareVertex, ErrorCode::TooFewAnchors, ErrorCode::TooManyAnchors, ErrorCode::LayoutFailed, ErrorCode::InternalError, ErrorCode::OrientationMismatch};
+  static const ErrorCode codes[] = {ErrorCode::Ok, ErrorCode::InvalidArgument, ErrorCode::FileNotFound, ErrorCode::UnsupportedFormat, ErrorCode::MalformedMesh, ErrorCode::OutputError, ErrorCode::EmptyMesh, ErrorCode::NotTriangles, ErrorCode::InvalidCoordinates, ErrorCode::DegenerateFace, ErrorCode::DuplicateFace, ErrorCode::OpenBoundary, ErrorCode::NonManifoldEdge, ErrorCode::NonManifoldVertex, ErrorCode::InconsistentOrientation, ErrorCode::MultipleComponents, ErrorCode::GenusMismatch, ErrorCode::MalformedAnchors, ErrorCode::AnchorNameMismatch, ErrorCode::DuplicateAnchorName, ErrorCode::AnchorIndexOutOfRange, ErrorCode::AnchorOffSurface, ErrorCode::AnchorsShareVertex, ErrorCode::TooFewAnchors, ErrorCode::TooManyAnchors, ErrorCode::LayoutFailed, ErrorCode::InternalError, ErrorCode::OrientationMismatch, ErrorCode::Cancelled};
   count = static_cast<int>(sizeof(codes) / sizeof(codes[0]));
   return codes;
 }

@@ -42,7 +42,8 @@ enum class ErrorCode {
   LayoutFailed,          ///< a common base domain could not be completed
   InternalError,         ///< a broken invariant: a bug, please report it
   // Added after the first release: appended, so that no earlier exit code moves.
-  OrientationMismatch    ///< one surface's faces point outward, the other's inward
+  OrientationMismatch,   ///< one surface's faces point outward, the other's inward
+  Cancelled              ///< the progress callback asked to stop (Ctrl-C, MeshLab's cancel)
 };
 
 /// Outcome of a stage: `code == Ok` or a message naming the problem and the fix.
