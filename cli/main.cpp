@@ -277,6 +277,7 @@ struct RunArgs {
   int smooth = 0;
   int straighten = cbd::PathSmoothingOptions{}.rounds;
   bool noUntangle = false;
+  std::string mapStage = "untangle";
   bool flipPaths = false;
 };
 
@@ -302,6 +303,7 @@ cbd::CrossParameterizationOptions pipelineOptions(const RunArgs& a, const std::v
   o.smoothing.iterations = a.smooth;
   o.straightening.rounds = a.straighten;
   o.untangle = !a.noUntangle;
+  o.mapStage = a.mapStage == "optimize" ? cbd::MapStage::Optimize : cbd::MapStage::Untangle;
   o.flipPaths = a.flipPaths;
   return o;
 }
@@ -498,7 +500,12 @@ int runMap(const RunArgs& a) {
   if (a.smooth > 0)
     j["smoothing"] = {{"iterations", a.smooth}, {"moves", r.smoothing.moves}, {"rejected", r.smoothing.rejected},
                       {"flipped_before", r.smoothing.flippedBefore}, {"flipped_after", r.smoothing.flippedAfter}};
-  if (!a.noUntangle) {
+  const bool optimized = !a.noUntangle && a.mapStage == "optimize";
+  if (optimized) {
+    const auto& o = r.optimization;
+    j["optimize"] = {{"iterations", o.iterations},      {"converged", o.converged},  {"energy_before", o.energyBefore},
+                     {"energy_after", o.energyAfter}, {"injective", o.injective}};
+  } else if (!a.noUntangle) {
     const auto &u = r.untangleSource, &w = r.untangleTarget;
     j["untangle"] = {{"flipped_before", u.flippedBefore},         {"flipped_after", u.flippedAfter},
                      {"moved_vertices", u.movedVertices},         {"inverse_flipped_before", w.flippedBefore},
@@ -562,7 +569,10 @@ int runMap(const RunArgs& a) {
   if (!a.noUntangle)
     std::printf("composed E_ang %.4f, E_L2 %.4f, %d flipped (the map before untangling)\n", r.composedMetrics.eAng,
                 r.composedMetrics.eL2, r.composedMetrics.flipped);
-  if (!a.noUntangle)
+  if (optimized)
+    std::printf("optimize %d iterations%s, injective in the base domain; M_ts (its inverse): %d flipped\n",
+                r.optimization.iterations, r.optimization.converged ? "" : " (not converged)", inverse.flipped);
+  else if (!a.noUntangle)
     std::printf("untangle flipped triangles of M_st %d -> %d (%d vertices moved), of M_ts %d -> %d\n",
                 r.untangleSource.flippedBefore, r.untangleSource.flippedAfter, r.untangleSource.movedVertices,
                 r.untangleTarget.flippedBefore, r.untangleTarget.flippedAfter);
@@ -702,6 +712,12 @@ int main(int argc, char** argv) {
                      "the paths, the time grows steeply with the rounds, and the paths settle within a few)")
       ->capture_default_str()
       ->check(CLI::Range(0, 8));
+  cmdMap->add_option("--map-stage", map.mapStage,
+                     "untangle: remove flipped triangles of M_st and M_ts, then polish (the default); optimize "
+                     "(experimental): M_st optimized in the base domain by Newton's method, injective there, "
+                     "M_ts its exact inverse, but with flipped triangles left (see README)")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"untangle", "optimize"}));
   cmdMap->add_flag("--no-untangle", map.noUntangle,
                    "keep the composed map as it is: do not move the images of the vertices of flipped M_st / M_ts "
                    "triangles over the target (the default removes most flips, then polishes the map; see README)");

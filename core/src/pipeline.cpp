@@ -143,7 +143,8 @@ LayoutPair buildLayouts(const IndexedMesh& source, const std::vector<int>& sa, c
 
 CrossParameterizationResult crossParameterize(const IndexedMesh& source, const std::vector<int>& sa,
                                               const IndexedMesh& target, const std::vector<int>& ta, int euler,
-                                              const CrossParameterizationOptions& options) {
+                                              const CrossParameterizationOptions& options,
+                                              const ProgressCallback& progress) {
   CrossParameterizationResult r;
   const auto t0 = std::chrono::steady_clock::now();
   r.layouts = buildLayouts(source, sa, target, ta, euler, options);
@@ -196,7 +197,16 @@ CrossParameterizationResult crossParameterize(const IndexedMesh& source, const s
     if (!r.composedMetrics.status) return r.status = r.composedMetrics.status, r;
   }
   t1 = std::chrono::steady_clock::now();
-  if (options.untangle) {
+  if (options.untangle && options.mapStage == MapStage::Optimize) {
+    const BaseDomain domain(r.layouts.source);
+    const SurfaceInDomain sourceInD(r.layouts.source, r.sourceParam, domain);
+    const SurfaceInDomain targetInD(r.layouts.target, r.targetParam, domain);
+    CrossMap optimized = optimizeCrossMap(source, target, sourceInD, targetInD, domain, options.optimization,
+                                          r.optimization, Progress{&progress, 40, 95});
+    r.times.untangle = seconds(t1);
+    if (!r.optimization.status) return r.status = r.optimization.status, r;
+    r.map = std::move(optimized);
+  } else if (options.untangle) {
     std::vector<char> fixedS(source.vertexCount(), 0), fixedT(target.vertexCount(), 0);
     for (int v : sa) fixedS[v] = 1;
     for (int v : ta) fixedT[v] = 1;
@@ -207,8 +217,8 @@ CrossParameterizationResult crossParameterize(const IndexedMesh& source, const s
     });
     r.untangleSource = untangleCrossMap(source, target, fixedS, r.map.sourceToTarget, r.map.sourceImage, options.untangling);
     inverse.join();
+    r.times.untangle = seconds(t1);
   }
-  r.times.untangle = seconds(t1);
   t1 = std::chrono::steady_clock::now();
   r.metrics = computeDistortion(source, r.map.sourceImage, target, r.map.sourceToTarget);
   r.times.distortion += seconds(t1);

@@ -10,6 +10,7 @@
 
 #include "cbd/distortion.h"
 #include "cbd/greedy_layout.h"
+#include "cbd/map_optimization.h"
 #include "cbd/map_smoothing.h"
 #include "cbd/map_untangle.h"
 #include "cbd/parameterization.h"
@@ -26,6 +27,14 @@ enum class LayoutMethod {
 };
 
 const char* layoutMethodName(LayoutMethod m);
+
+/// The last stage of the cross-map, after the composition.
+enum class MapStage {
+  Untangle,  ///< remove flipped triangles from M_st and M_ts, then polish (map_untangle.h)
+  /// Experimental: M_st optimized in the base domain, injective there, M_ts its inverse
+  /// (map_optimization.h); see README for what it does not reach yet.
+  Optimize
+};
 
 /// Options of `buildLayouts` / `crossParameterize`.
 struct CrossParameterizationOptions {
@@ -51,8 +60,10 @@ struct CrossParameterizationOptions {
   /// method alike; 0 rounds: the paths as traced.
   PathSmoothingOptions straightening;
   MapSmoothingOptions smoothing;        ///< 0 iterations: the composed map as it is
-  bool untangle = true;                 ///< remove flipped triangles from M_st and M_ts (map_untangle.h)
+  bool untangle = true;                 ///< run `mapStage` (false: the composed map as it is)
+  MapStage mapStage = MapStage::Untangle;
   MapUntangleOptions untangling;
+  MapOptimizationOptions optimization;
   /// The anchors' names, in the order of the anchor vectors (both sides alike), for the layout
   /// builders' messages; empty: anchors are named by their position.
   std::vector<std::string> anchorNames;
@@ -65,7 +76,7 @@ struct StageTimes {
   double targetLayout = 0.0;     ///< Voronoi: + path flipping, when on
   double straighten = 0.0;       ///< path straightening on both surfaces
   double parameterization = 0.0; ///< both surfaces' patch maps + composition (+ smoothing)
-  double untangle = 0.0;         ///< removing flipped triangles from M_st and M_ts
+  double untangle = 0.0;         ///< the map stage: untangling M_st and M_ts, or the optimization
   double distortion = 0.0;
   double total = 0.0;
 };
@@ -119,6 +130,7 @@ struct CrossParameterizationResult {
   MapSmoothingResult smoothing;
   MapUntangleResult untangleSource;   ///< M_st (source vertices on the target)
   MapUntangleResult untangleTarget;   ///< M_ts (target vertices on the source)
+  MapOptimizationResult optimization; ///< with MapStage::Optimize
   DistortionMetrics metrics;          ///< of M_st against the source
   /// The same of M_st as composed, before untangling: what the base domains and their patch
   /// maps give by themselves (after `smoothing`, when asked for; equal to `metrics` when
@@ -128,8 +140,11 @@ struct CrossParameterizationResult {
 };
 
 /// Cross-parameterize two validated surfaces of equal genus with corresponding anchors.
+/// `progress` (optional) sees the run's percentage and stage names; when it returns false the
+/// run stops with ErrorCode::Cancelled.
 CrossParameterizationResult crossParameterize(const IndexedMesh& source, const std::vector<int>& sourceAnchors,
                                               const IndexedMesh& target, const std::vector<int>& targetAnchors,
-                                              int euler, const CrossParameterizationOptions& options = {});
+                                              int euler, const CrossParameterizationOptions& options = {},
+                                              const ProgressCallback& progress = {});
 
 }  // namespace cbd
