@@ -38,7 +38,7 @@ struct Method {
   CrossParameterizationOptions options;
 };
 
-/// The three methods with cbd's defaults (paths straightened, path_smoothing.h), then the
+/// The three methods with cbd's defaults (paths straightened, path_straightening.h), then the
 /// greedy baseline and Voronoi C with their paths as traced: the paper's protocol, where
 /// nothing but the map is post-processed.
 std::vector<Method> methods() {

@@ -380,7 +380,7 @@ completion, path flipping), **Voronoi E1** = the paper's method with one edge no
 **Voronoi C** = with adaptive edge nodes (b = {B_NODES}). All use the same edge-node graph, tracer and
 build flags; the greedy method's cost is its all-pairs searches over the whole surfaces and its
 trial and error. All three have their layouts' paths straightened inside their patches
-(cbd's default, `--straighten {ROUNDS}`, the same for every method: `core/include/cbd/path_smoothing.h`)
+(cbd's default, `--straighten {ROUNDS}`, the same for every method: `core/include/cbd/path_straightening.h`)
 before the patch maps are computed; **greedy-traced** and **Voronoi-C-traced** are the same runs
 with the paths as traced (`--straighten 0`), the paper's protocol, where only the map is
 post-processed.

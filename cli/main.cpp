@@ -275,7 +275,7 @@ struct RunArgs {
   double snapTolerance = 0.01;
   int morph = 0;
   int smooth = 0;
-  int straighten = cbd::PathSmoothingOptions{}.rounds;
+  int straighten = cbd::PathStraighteningOptions{}.rounds;
   bool noUntangle = false;
   std::string mapStage = "untangle";
   bool flipPaths = false;
@@ -487,7 +487,7 @@ int runMap(const RunArgs& a) {
   if (!r.status) return finish(r.status, j, a.jsonPath);
   j["layout"] = layoutJson(r.layouts);
   if (a.straighten > 0) {
-    auto side = [](const cbd::PathSmoothingResult& s) {
+    auto side = [](const cbd::PathStraighteningResult& s) {
       return json{{"straightened", s.straightened}, {"skipped", s.skipped}, {"splits", s.splits},
                   {"length_before", s.lengthBefore}, {"length_after", s.lengthAfter}};
     };

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "cbd/layout.h"
-#include "cbd/path_smoothing.h"
+#include "cbd/path_straightening.h"
 #include "cbd/mesh.h"
 #include "cbd/status.h"
 #include "cbd/validate_input.h"
@@ -35,7 +35,7 @@ struct PipelineOptions {
   bool adaptiveEdgeNodes = true; ///< "Adaptive edge nodes"
   int smoothingIterations = 0;   ///< "Smoothing iterations" (Cross-parameterize only; 0 otherwise)
   /// "Straighten paths (rounds)" (Cross-parameterize only; the layout filter shows paths as traced)
-  int straightenRounds = cbd::PathSmoothingOptions{}.rounds;
+  int straightenRounds = cbd::PathStraighteningOptions{}.rounds;
   bool colourByCluster = false;  ///< "Colour by Voronoi cluster" (Voronoi common base domain only)
   bool colourByPatch = true;     ///< "Colour layers by patch" (Cross-parameterize; always on for Voronoi)
   bool addMstLayer = true;       ///< "Add M_st layer" (Cross-parameterize)

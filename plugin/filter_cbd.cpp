@@ -352,7 +352,7 @@ void FilterCbdPlugin::initParameterSet(QAction* action, MeshDocument& md, RichPa
                           "(corresponding clusters get the same colour) instead of by patch. "
                           "Voronoi method only."));
   if (id == FP_CROSS_PARAMETERIZE) {
-    par.addParam(RichInt(kStraightenRounds, cbd::PathSmoothingOptions{}.rounds, "Straighten paths (rounds)",
+    par.addParam(RichInt(kStraightenRounds, cbd::PathStraighteningOptions{}.rounds, "Straighten paths (rounds)",
                          "Rounds straightening every path of both base domains inside its two patches "
                          "(the diagonal of their quadrilateral mapped onto a square), before the patches "
                          "are parameterized; the same for either method (0: the paths as traced; at most 8)."));

@@ -154,7 +154,7 @@ CrossParameterizationResult crossParameterize(const IndexedMesh& source, const s
   if (options.straightening.rounds > 0) {
     // Both surfaces or neither: if either result fails its checks, both layouts stay as traced
     // (corresponding quadrilaterals must get corresponding diagonals).
-    auto straighten = [&](const Layout& L, PathSmoothingResult& out) {
+    auto straighten = [&](const Layout& L, PathStraighteningResult& out) {
       Layout copy = L;
       out = straightenPaths(copy, options.straightening);
       if (out.status)

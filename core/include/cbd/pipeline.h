@@ -14,7 +14,7 @@
 #include "cbd/map_smoothing.h"
 #include "cbd/map_untangle.h"
 #include "cbd/parameterization.h"
-#include "cbd/path_smoothing.h"
+#include "cbd/path_straightening.h"
 #include "cbd/source_layout.h"
 #include "cbd/target_layout.h"
 
@@ -56,9 +56,9 @@ struct CrossParameterizationOptions {
   /// Greedy method: its path flipping (step 4 of greedy_layout.h; off only to measure what the
   /// flipping does, as `cbd_bench flipping` does).
   bool greedyFlipPaths = true;
-  /// Both layouts' paths straightened inside their two patches (path_smoothing.h), for either
+  /// Both layouts' paths straightened inside their two patches (path_straightening.h), for either
   /// method alike; 0 rounds: the paths as traced.
-  PathSmoothingOptions straightening;
+  PathStraighteningOptions straightening;
   MapSmoothingOptions smoothing;        ///< 0 iterations: the composed map as it is
   bool untangle = true;                 ///< run `mapStage` (false: the composed map as it is)
   MapStage mapStage = MapStage::Untangle;
@@ -123,7 +123,7 @@ struct CrossParameterizationResult {
   /// Path straightening of each layout. When either failed or its result did not validate (that
   /// one's status says why), both layouts are kept as traced and `straightenFailed` is set; the
   /// counts are then of the attempt thrown away.
-  PathSmoothingResult straightenSource, straightenTarget;
+  PathStraighteningResult straightenSource, straightenTarget;
   bool straightenFailed = false;
   PatchParameterization sourceParam, targetParam;
   CrossMap map;

@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "cbd/anchor_sampling.h"
-#include "cbd/path_smoothing.h"
+#include "cbd/path_straightening.h"
 #include "cbd/source_layout.h"
 #include "cbd/target_layout.h"
 #include "cbd/validate_input.h"
@@ -69,7 +69,7 @@ void expectSameCombinatorics(const Layout& before, const Layout& after, int eule
 
 }  // namespace
 
-TEST(PathSmoothing, CollinearAnchorsOnATubeLoseTheirSliverPatch) {
+TEST(PathStraightening, CollinearAnchorsOnATubeLoseTheirSliverPatch) {
   // Three anchors on one generator of a tube, plus its cap centres: the traced layout closes
   // the region beside the three with a path hugging the other two, a patch of a few faces'
   // width. Its quadrilateral's diagonal runs round the far side of the tube instead.
@@ -82,9 +82,9 @@ TEST(PathSmoothing, CollinearAnchorsOnATubeLoseTheirSliverPatch) {
   const double tracedSliver = smallestOverMean(patchAreas(r.layout));
   EXPECT_LT(tracedSliver, 0.2);
   Layout L = r.layout;
-  PathSmoothingOptions o;
+  PathStraighteningOptions o;
   o.rounds = 2;
-  const PathSmoothingResult s = straightenPaths(L, o);
+  const PathStraighteningResult s = straightenPaths(L, o);
   ASSERT_TRUE(s.status.ok()) << s.status.message;
   EXPECT_EQ(s.straightened, static_cast<int>(L.edges.size()));
   EXPECT_GT(s.splits, 0);
@@ -92,7 +92,7 @@ TEST(PathSmoothing, CollinearAnchorsOnATubeLoseTheirSliverPatch) {
   EXPECT_GT(smallestOverMean(patchAreas(L)), 0.5);
 }
 
-TEST(PathSmoothing, KeepsTheCombinatoricsOfSphereTorusAndDoubleTorusLayouts) {
+TEST(PathStraightening, KeepsTheCombinatoricsOfSphereTorusAndDoubleTorusLayouts) {
   struct Case {
     IndexedMesh mesh;
     int anchors;
@@ -106,9 +106,9 @@ TEST(PathSmoothing, KeepsTheCombinatoricsOfSphereTorusAndDoubleTorusLayouts) {
     const SourceLayoutResult r = buildSourceLayout(c.mesh, farthestPointSampling(c.mesh, c.anchors));
     ASSERT_TRUE(r.status.ok()) << r.status.message;
     Layout L = r.layout;
-    PathSmoothingOptions o;
+    PathStraighteningOptions o;
     o.rounds = 2;
-    const PathSmoothingResult s = straightenPaths(L, o);
+    const PathStraighteningResult s = straightenPaths(L, o);
     ASSERT_TRUE(s.status.ok()) << s.status.message;
     EXPECT_GT(s.straightened, 0);
     EXPECT_EQ(s.straightened + s.skipped, static_cast<int>(L.edges.size()));
@@ -118,14 +118,14 @@ TEST(PathSmoothing, KeepsTheCombinatoricsOfSphereTorusAndDoubleTorusLayouts) {
   }
 }
 
-TEST(PathSmoothing, ZeroRoundsLeaveTheLayoutAlone) {
+TEST(PathStraightening, ZeroRoundsLeaveTheLayoutAlone) {
   const IndexedMesh m = fx::icosphere(2);
   const SourceLayoutResult r = buildSourceLayout(m, farthestPointSampling(m, 8));
   ASSERT_TRUE(r.status.ok());
   Layout L = r.layout;
-  PathSmoothingOptions o;
+  PathStraighteningOptions o;
   o.rounds = 0;
-  const PathSmoothingResult s = straightenPaths(L, o);
+  const PathStraighteningResult s = straightenPaths(L, o);
   EXPECT_TRUE(s.status.ok());
   EXPECT_EQ(s.straightened, 0);
   EXPECT_EQ(L.mesh.vertexCount(), r.layout.mesh.vertexCount());

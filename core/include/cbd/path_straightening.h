@@ -1,5 +1,5 @@
 #pragma once
-/// @file path_smoothing.h
+/// @file path_straightening.h
 /// Straightening the paths of a finished layout, the same way for every method: each path is
 /// replaced by the diagonal of the quadrilateral formed by its two patches, mapped onto the unit
 /// square with Floater's mean-value weights (its four sides by arc length onto the square's
@@ -21,12 +21,12 @@
 namespace cbd {
 
 /// Options of `straightenPaths`.
-struct PathSmoothingOptions {
+struct PathStraighteningOptions {
   int rounds = 2;  ///< sweeps over all paths (0: none); a second one settles what the first moved
 };
 
 /// What `straightenPaths` did.
-struct PathSmoothingResult {
+struct PathStraighteningResult {
   Status status;          ///< InternalError when a path could not be cut in (the layout is then
                           ///< partly straightened and must be discarded)
   int straightened = 0;   ///< paths replaced
@@ -39,6 +39,6 @@ struct PathSmoothingResult {
 /// Straighten every path of a valid layout (see the file comment). Keeps `edges`, `patches`,
 /// `rotation`, `facePatch`, `edgePath` and `faceCluster` consistent; `validateLayout` holds
 /// afterwards whenever the status is ok.
-PathSmoothingResult straightenPaths(Layout& layout, const PathSmoothingOptions& options = {});
+PathStraighteningResult straightenPaths(Layout& layout, const PathStraighteningOptions& options = {});
 
 }  // namespace cbd

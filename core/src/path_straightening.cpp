@@ -1,4 +1,4 @@
-#include "cbd/path_smoothing.h"
+#include "cbd/path_straightening.h"
 
 #include <algorithm>
 #include <array>
@@ -23,7 +23,7 @@ struct Event {
 
 /// Straighten layout edge e. Returns false (layout untouched) when it is skipped; sets `error`
 /// when the layout was changed and could not be completed.
-bool straightenOne(Layout& L, int e, PathSmoothingResult& r, std::string& error) {
+bool straightenOne(Layout& L, int e, PathStraighteningResult& r, std::string& error) {
   RefinedMesh& m = L.mesh;
   const LayoutEdge& edge = L.edges[e];
   // The patch with e running a -> b counter-clockwise (P1, third corner c) and the one with it
@@ -260,8 +260,8 @@ bool straightenOne(Layout& L, int e, PathSmoothingResult& r, std::string& error)
 
 }  // namespace
 
-PathSmoothingResult straightenPaths(Layout& L, const PathSmoothingOptions& options) {
-  PathSmoothingResult r;
+PathStraighteningResult straightenPaths(Layout& L, const PathStraighteningOptions& options) {
+  PathStraighteningResult r;
   for (const LayoutEdge& e : L.edges) r.lengthBefore += e.length;
   std::vector<char> done(L.edges.size(), 0);
   for (int round = 0; round < options.rounds; ++round)
