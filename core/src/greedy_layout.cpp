@@ -244,8 +244,14 @@ struct PairEditor {
 }  // namespace
 
 GreedyLayoutResult buildGreedyLayout(const IndexedMesh& S, const std::vector<int>& sa, const IndexedMesh& T,
-                                     const std::vector<int>& ta, const GreedyLayoutOptions& options) {
+                                     const std::vector<int>& ta, const GreedyLayoutOptions& options,
+                                     const Progress& progress) {
   GreedyLayoutResult r;
+  const char* const stage = "tracing the base domains";
+  auto cancelled = [&] {
+    r.status = Status::error(ErrorCode::Cancelled, "cancelled while tracing the greedy layouts");
+    return r;
+  };
   const int na = static_cast<int>(sa.size());
   if (na < 3 || ta.size() != sa.size()) {
     r.status = Status::error(ErrorCode::InvalidArgument, "the greedy layout needs the same number (>= 3) of anchors on both meshes");
@@ -293,6 +299,8 @@ GreedyLayoutResult buildGreedyLayout(const IndexedMesh& S, const std::vector<int
   for (int s = 0; s < 2; ++s) {
     dist[s].assign(na, std::vector<double>(na, std::numeric_limits<double>::infinity()));
     for (int i = 0; i + 1 < na; ++i) {
+      if (!progress.report(0.15 * (s + static_cast<double>(i) / na), "shortest paths between the anchors"))
+        return cancelled();
       PathQuery q;
       q.source = sides[s]->vertex(i);
       q.distancesOnly = true;
@@ -327,8 +335,10 @@ GreedyLayoutResult buildGreedyLayout(const IndexedMesh& S, const std::vector<int
   };
 
   // 2. Trial and error in order of length.
+  auto report = [&] { return progress.report(0.3 + 0.6 * edges.size() / std::max(targetEdges, 1), stage); };
   for (const Candidate& c : queue) {
     if (static_cast<int>(edges.size()) >= targetEdges) break;
+    if (!report()) return cancelled();
     if (linked[c.i][c.j]) continue;
     ++r.tried;
     const int id = ed.newEdge(EdgeKind::Greedy);
@@ -351,6 +361,7 @@ GreedyLayoutResult buildGreedyLayout(const IndexedMesh& S, const std::vector<int
   RegionMap ms = analyzeRegions(ss.layout.mesh, ss.tracer.edgePath(), ss.anchorMap());
   RegionMap mt = analyzeRegions(st.layout.mesh, st.tracer.edgePath(), st.anchorMap());
   for (int guard = 0;; ++guard) {
+    if (!report()) return cancelled();
     const int bad = ms.firstNonTriangle();
     if (bad < 0) break;
     const Region& rs = ms.regions[bad];
@@ -468,6 +479,7 @@ GreedyLayoutResult buildGreedyLayout(const IndexedMesh& S, const std::vector<int
   }
 
   // 4. Path flipping.
+  if (!progress.report(0.9, "flipping paths")) return cancelled();
   if (options.flipPaths) {
     r.flips = ed.flipPaths(nullptr);
     if (r.flips < 0) return r.flips = 0, r.status = ed.status, r;

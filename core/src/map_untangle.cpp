@@ -238,8 +238,9 @@ double productOf(const IndexedMesh& S, const std::vector<Vec3>& image, double w)
 /// corner on a target edge or vertex that is stricter than the metrics' test, never looser.
 MapUntangleResult untangleOnce(const IndexedMesh& S, const IndexedMesh& T, const SurfaceWalker& walker,
                                const Stars& stars, const std::vector<char>& fixed, std::vector<FacePoint>& onTarget,
-                               std::vector<Vec3>& image, const MapUntangleOptions& options) {
+                               std::vector<Vec3>& image, const MapUntangleOptions& options, const Progress& progress) {
   MapUntangleResult r;
+  const char* const stage = "removing flipped triangles";
   const int nv = S.vertexCount(), nf = S.faceCount();
   const std::vector<Vec3>& normal = walker.normals();
   const double diag2 = boxDiagonal2(T.positions);
@@ -388,6 +389,7 @@ MapUntangleResult untangleOnce(const IndexedMesh& S, const IndexedMesh& T, const
   int ring = 0;
   int stalled = 0;
   for (int round = 0; round < options.maxRounds && badNow > 0; ++round) {
+    if (!progress.report(0.5 * round / options.maxRounds, stage)) break;
     // 1. Local moves of the vertices of bad triangles.
     std::vector<char> active(nv, 0);
     for (int f = 0; f < nf; ++f)
@@ -481,6 +483,7 @@ MapUntangleResult untangleOnce(const IndexedMesh& S, const IndexedMesh& T, const
   //    surface, so that folds that no single move resolves come undone together. Kept only
   //    when fewer triangles are bad.
   for (int pass = 0; pass < options.energyPasses && badNow > 0 && options.energySweeps > 0; ++pass) {
+    if (!progress.report(0.5 + 0.25 * pass / options.energyPasses, stage)) break;
     const std::vector<int> dist = ringsAroundBad(options.maxRing);
     // The region's own area scale (image area per unit of source area, before relaxing): the
     // energy's area term then keeps the local scale of the composed map rather than pulling it
@@ -576,6 +579,7 @@ MapUntangleResult untangleOnce(const IndexedMesh& S, const IndexedMesh& T, const
   auto l2Stretch = [&] { return l2StretchOf(S, image); };
   for (double f = options.lastResortFactor; badNow > 0 && f > 1 && f <= options.lastResortFactor * options.lastResortFactor;
        f *= options.lastResortFactor) {
+    if (!progress.report(0.75, stage)) break;
     const std::vector<FacePoint> keepFp = onTarget;
     const std::vector<Vec3> keepX = image;
     const int keepMoves = r.moves, keepBad = badNow;
@@ -605,7 +609,7 @@ MapUntangleResult untangleOnce(const IndexedMesh& S, const IndexedMesh& T, const
 /// Only vertices next to a move are visited again. Returns the number of accepted moves.
 int polishMap(const IndexedMesh& S, const IndexedMesh& T, const SurfaceWalker& walker, const Stars& stars,
               const TargetNormals& targetNormals, const std::vector<char>& fixed, std::vector<FacePoint>& onTarget,
-              std::vector<Vec3>& image, const MapUntangleOptions& options) {
+              std::vector<Vec3>& image, const MapUntangleOptions& options, const Progress& progress) {
   if (options.polishSweeps <= 0) return 0;
   const int nv = S.vertexCount(), nf = S.faceCount();
   const std::vector<Vec3>& normal = walker.normals();
@@ -672,6 +676,7 @@ int polishMap(const IndexedMesh& S, const IndexedMesh& T, const SurfaceWalker& w
     for (int i = nv - 1; i > 0; --i) std::swap(order[i], order[next64() % static_cast<std::uint64_t>(i + 1)]);
   }
   for (int sweep = 0; sweep < options.polishSweeps; ++sweep) {
+    if (!progress.report(static_cast<double>(sweep) / options.polishSweeps, "polishing the map")) break;
     std::vector<char> next(nv, 0);
     int swept = 0;
     const double angStart = sumAng, l2Start = sumL2 / (sumAt * sumAt);
@@ -881,7 +886,7 @@ bool relayAnchorDisk(const IndexedMesh& source, const IndexedMesh& target, const
 
 MapUntangleResult untangleCrossMap(const IndexedMesh& S, const IndexedMesh& T, const std::vector<char>& fixed,
                                    std::vector<FacePoint>& onTarget, std::vector<Vec3>& image,
-                                   const MapUntangleOptions& options) {
+                                   const MapUntangleOptions& options, const Progress& progress) {
   const TargetNormals normals(T);
   const double diag2 = boxDiagonal2(T.positions);
   // Degenerate image triangles as the metrics count them (the metrics take the images' box,
@@ -907,10 +912,22 @@ MapUntangleResult untangleCrossMap(const IndexedMesh& S, const IndexedMesh& T, c
   const SurfaceWalker walker(T);
   const Stars stars(S);
   MapUntangleResult r;
+  // Progress: the runs of stages 1-6 share the first 60 % (run k its half of what is left, as
+  // their number depends on what each leaves), the polish the rest.
+  int runs = 0;
+  auto nextRun = [&] {
+    const double a = 0.6 * (1.0 - std::pow(0.5, runs)), b = 0.6 * (1.0 - std::pow(0.5, runs + 1));
+    ++runs;
+    return progress.part(a, b);
+  };
+  auto cancelled = [&] {
+    r.status = Status::error(ErrorCode::Cancelled, "cancelled while removing flipped triangles");
+    return r;
+  };
   // Stages 1-6 only where something is flipped; the polish (stage 7) in any case, so that the
   // result does not depend on whether the composed map happened to have a flip.
   if (before > 0) {
-    r = untangleOnce(S, T, walker, stars, fixed, onTarget, image, options);
+    r = untangleOnce(S, T, walker, stars, fixed, onTarget, image, options, nextRun());
     r.flippedBefore = before;
     r.flippedAfter = flips(onTarget, image);
     r.attempts = 1;
@@ -918,9 +935,10 @@ MapUntangleResult untangleCrossMap(const IndexedMesh& S, const IndexedMesh& T, c
     // the fewest flips, then the lowest E_ang x E_L2^w (the polish's objective), is kept.
     double bestScore = r.flippedAfter > 0 ? productOf(S, image, options.polishStretchWeight) : 0.0;
     auto retryFromStart = [&](const MapUntangleOptions& o) {
+      if (progress.cancelled()) return;
       std::vector<FacePoint> on = startOn;
       std::vector<Vec3> x = startImage;
-      MapUntangleResult t = untangleOnce(S, T, walker, stars, fixed, on, x, o);
+      MapUntangleResult t = untangleOnce(S, T, walker, stars, fixed, on, x, o, nextRun());
       t.flippedBefore = before;
       t.flippedAfter = flips(on, x);
       t.attempts = r.attempts + 1;
@@ -964,10 +982,11 @@ MapUntangleResult untangleCrossMap(const IndexedMesh& S, const IndexedMesh& T, c
         double bestRestartScore = 0;
         MapUntangleResult best;  // the untangling of the restart kept (none: `bestLeft` unchanged)
         for (const int rings : options.anchorRestartRings) {
+          if (progress.cancelled()) break;
           std::vector<FacePoint> on = keptOn;
           std::vector<Vec3> x = keptImage;
           if (!reembedStar(S, stars, walker, fixed, a, rings, on, x)) continue;
-          const MapUntangleResult t = untangleOnce(S, T, walker, stars, fixed, on, x, o);
+          const MapUntangleResult t = untangleOnce(S, T, walker, stars, fixed, on, x, o, nextRun());
           ++r.attempts;
           const int left = flips(on, x);
           if (left > bestLeft || (left == bestLeft && bestLeft == r.flippedAfter)) continue;
@@ -1009,9 +1028,11 @@ MapUntangleResult untangleCrossMap(const IndexedMesh& S, const IndexedMesh& T, c
       r.flippedAfter = before, r.moves = 0;  // the moves discarded are not reported
     }
   }
+  if (progress.cancelled()) return cancelled();
   // The polish, once, on the map kept: it never turns a triangle bad, so the flip count cannot
   // grow (it is counted again all the same).
-  r.moves += polishMap(S, T, walker, stars, normals, fixed, onTarget, image, options);
+  r.moves += polishMap(S, T, walker, stars, normals, fixed, onTarget, image, options, progress.part(0.6, 1.0));
+  if (progress.cancelled()) return cancelled();
   r.flippedAfter = flips(onTarget, image);
   r.movedVertices = 0;
   for (size_t v = 0; v < image.size(); ++v) r.movedVertices += image[v] != startImage[v];

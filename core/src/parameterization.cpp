@@ -187,7 +187,8 @@ bool meanValueMap(const RefinedMesh& mesh, const std::vector<int>& faces,
   return true;
 }
 
-PatchParameterization parameterizePatches(const Layout& L, const ParameterizationOptions& options) {
+PatchParameterization parameterizePatches(const Layout& L, const ParameterizationOptions& options,
+                                          const Progress& progress) {
   PatchParameterization out;
   const int nf = L.mesh.faceCount();
   out.cornerUV.assign(nf, {Vec2::Zero(), Vec2::Zero(), Vec2::Zero()});
@@ -201,6 +202,10 @@ PatchParameterization parameterizePatches(const Layout& L, const Parameterizatio
   std::mutex errorMutex;
   auto work = [&] {
     for (int p; (p = next++) < static_cast<int>(L.patches.size());) {
+      if (!progress.report(static_cast<double>(p) / L.patches.size(), "mapping the patches")) {
+        failed = true;
+        continue;
+      }
       const Patch& patch = L.patches[p];
       std::vector<std::array<Vec2, 3>> uv;
       int n = 0;
@@ -224,7 +229,9 @@ PatchParameterization parameterizePatches(const Layout& L, const Parameterizatio
   work();
   for (auto& t : pool) t.join();
   out.interiorVertices = interior;
-  if (failed) out.status = Status::error(ErrorCode::InternalError, error);
+  if (failed)
+    out.status = progress.cancelled() ? Status::error(ErrorCode::Cancelled, "cancelled while mapping the patches")
+                                      : Status::error(ErrorCode::InternalError, error);
   return out;
 }
 

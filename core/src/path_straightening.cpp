@@ -260,12 +260,17 @@ bool straightenOne(Layout& L, int e, PathStraighteningResult& r, std::string& er
 
 }  // namespace
 
-PathStraighteningResult straightenPaths(Layout& L, const PathStraighteningOptions& options) {
+PathStraighteningResult straightenPaths(Layout& L, const PathStraighteningOptions& options,
+                                        const Progress& progress) {
   PathStraighteningResult r;
   for (const LayoutEdge& e : L.edges) r.lengthBefore += e.length;
   std::vector<char> done(L.edges.size(), 0);
   for (int round = 0; round < options.rounds; ++round)
     for (size_t e = 0; e < L.edges.size(); ++e) {
+      if (!progress.report((round + static_cast<double>(e) / L.edges.size()) / options.rounds, "straightening the paths")) {
+        r.status = Status::error(ErrorCode::Cancelled, "cancelled while straightening the paths");
+        return r;
+      }
       std::string error;
       if (straightenOne(L, static_cast<int>(e), r, error)) done[e] = 1;
       if (!error.empty()) {

@@ -14,6 +14,22 @@ double seconds(std::chrono::steady_clock::time_point t0) {
 
 const char* layoutMethodName(LayoutMethod m) { return m == LayoutMethod::Voronoi ? "voronoi" : "greedy"; }
 
+Status validate(const CrossParameterizationOptions& o) {
+  auto outside = [](const char* what, IntRange r, int v) {
+    return Status::error(ErrorCode::InvalidArgument, std::string(what) + " must be in " + std::to_string(r.lo) + ".." +
+                                                         std::to_string(r.hi) + ", got " + std::to_string(v));
+  };
+  if (!kMinEdgeNodesRange.contains(o.edgeNodes.minEdgeNodes))
+    return outside("the minimum number of edge nodes", kMinEdgeNodesRange, o.edgeNodes.minEdgeNodes);
+  if (!kStraightenRoundsRange.contains(o.straightening.rounds))
+    return outside("the rounds of path straightening", kStraightenRoundsRange, o.straightening.rounds);
+  if (!kSmoothingIterationsRange.contains(o.smoothing.iterations))
+    return outside("the smoothing iterations", kSmoothingIterationsRange, o.smoothing.iterations);
+  if (!(o.reverseDetour >= 0) || !(o.detourWarning >= 0))
+    return Status::error(ErrorCode::InvalidArgument, "the detour thresholds must be numbers >= 0 (0: off)");
+  return Status::success();
+}
+
 double lengthDetour(const Layout& source, const Layout& target) {
   std::vector<double> ratio;
   for (size_t e = 0; e < source.edges.size() && e < target.edges.size(); ++e)
@@ -33,13 +49,13 @@ namespace {
 /// `onto` is `from` itself with the same anchors, and gets the same layout.
 LayoutPair voronoiLayouts(const IndexedMesh& from, const std::vector<int>& fa, const IndexedMesh& onto,
                           const std::vector<int>& ta, int euler, const CrossParameterizationOptions& options,
-                          bool ontoIsFrom = false) {
+                          const Progress& progress, bool ontoIsFrom = false) {
   LayoutPair p;
   p.method = LayoutMethod::Voronoi;
   SourceLayoutOptions so;
   so.edgeNodes = options.edgeNodes;
   so.anchorNames = options.anchorNames;
-  p.sourceStats = buildSourceLayout(from, fa, so);
+  p.sourceStats = buildSourceLayout(from, fa, so, progress.part(0.0, ontoIsFrom ? 1.0 : 0.5));
   p.times.voronoi = p.sourceStats.voronoiSeconds;
   p.times.sourceLayout = p.sourceStats.layoutSeconds;
   if (!p.sourceStats.status) return p.status = p.sourceStats.status, p;
@@ -53,7 +69,7 @@ LayoutPair voronoiLayouts(const IndexedMesh& from, const std::vector<int>& fa, c
   TargetLayoutOptions to;
   to.edgeNodes = options.edgeNodes;
   to.anchorNames = options.anchorNames;
-  p.targetStats = buildTargetLayout(p.sourceStats.layout, onto, ta, to);
+  p.targetStats = buildTargetLayout(p.sourceStats.layout, onto, ta, to, progress.part(0.5, 1.0));
   p.times.voronoi += p.targetStats.voronoiSeconds;
   p.times.targetLayout = p.targetStats.layoutSeconds;
   if (!p.targetStats.status) return p.status = p.targetStats.status, p;
@@ -66,15 +82,17 @@ LayoutPair voronoiLayouts(const IndexedMesh& from, const std::vector<int>& fa, c
 }  // namespace
 
 LayoutPair buildLayouts(const IndexedMesh& source, const std::vector<int>& sa, const IndexedMesh& target,
-                        const std::vector<int>& ta, int euler, const CrossParameterizationOptions& options) {
+                        const std::vector<int>& ta, int euler, const CrossParameterizationOptions& options,
+                        const Progress& progress) {
   LayoutPair p;
+  if (Status s = validate(options); !s) return p.status = s, p;
   p.method = options.method;
   if (options.method == LayoutMethod::Greedy) {
     GreedyLayoutOptions g;
     g.edgeNodes = options.edgeNodes;
     g.anchorNames = options.anchorNames;
     g.flipPaths = options.greedyFlipPaths;
-    p.greedyStats = buildGreedyLayout(source, sa, target, ta, g);
+    p.greedyStats = buildGreedyLayout(source, sa, target, ta, g, progress);
     p.times.sourceLayout = p.greedyStats.candidateSeconds + p.greedyStats.layoutSeconds;
     if (!p.greedyStats.status) return p.status = p.greedyStats.status, p;
     p.source = std::move(p.greedyStats.source);
@@ -84,17 +102,19 @@ LayoutPair buildLayouts(const IndexedMesh& source, const std::vector<int>& sa, c
   } else {
     // One surface with the same anchors on both sides: one diagram, one layout for both.
     const bool same = source.positions == target.positions && source.faces == target.faces && sa == ta;
-    p = voronoiLayouts(source, sa, target, ta, euler, options, same);
+    p = voronoiLayouts(source, sa, target, ta, euler, options, progress, same);
     // A target layout whose paths are far longer than their source counterparts has detoured
     // around anchors (a twist): the target's own Voronoi diagram may be the better cue.
-    const bool retry = !same && options.reverseDetour > 0 && (!p.status || p.detour > options.reverseDetour);
+    const bool retry = !same && options.reverseDetour > 0 && p.status.code != ErrorCode::Cancelled &&
+                       (!p.status || p.detour > options.reverseDetour);
     if (retry) {
       const StageTimes first = p.times;
-      LayoutPair q = voronoiLayouts(target, ta, source, sa, euler, options);
+      LayoutPair q = voronoiLayouts(target, ta, source, sa, euler, options, progress);
       const StageTimes second = q.times;
       // Both detours measured source -> target (the measure is not quite symmetric: the median
       // of an even count of ratios), so that the one kept is the lower as reported.
       const double reverse = q.status ? lengthDetour(q.target, q.source) : 0.0;
+      if (q.status.code == ErrorCode::Cancelled) return q;
       if (q.status && (!p.status || reverse < p.detour)) {
         const double forwardDetour = p.status ? p.detour : 0.0;
         p = std::move(q);
@@ -144,28 +164,34 @@ LayoutPair buildLayouts(const IndexedMesh& source, const std::vector<int>& sa, c
 CrossParameterizationResult crossParameterize(const IndexedMesh& source, const std::vector<int>& sa,
                                               const IndexedMesh& target, const std::vector<int>& ta, int euler,
                                               const CrossParameterizationOptions& options,
-                                              const ProgressCallback& progress) {
+                                              const Progress& progress) {
   CrossParameterizationResult r;
   const auto t0 = std::chrono::steady_clock::now();
-  r.layouts = buildLayouts(source, sa, target, ta, euler, options);
+  if (Status s = validate(options); !s) return r.status = s, r;
+  // Shares of the progress bar, by the stages' usual share of the time.
+  const Progress layoutsPart = progress.part(0.0, 0.2), straightenPart = progress.part(0.2, 0.3),
+                 patchesPart = progress.part(0.3, 0.4), mapPart = progress.part(0.4, 0.95);
+  r.layouts = buildLayouts(source, sa, target, ta, euler, options, layoutsPart);
   r.times = r.layouts.times;
   if (!r.layouts.status) return r.status = r.layouts.status, r;
   auto t1 = std::chrono::steady_clock::now();
   if (options.straightening.rounds > 0) {
     // Both surfaces or neither: if either result fails its checks, both layouts stay as traced
     // (corresponding quadrilaterals must get corresponding diagonals).
-    auto straighten = [&](const Layout& L, PathStraighteningResult& out) {
+    auto straighten = [&](const Layout& L, PathStraighteningResult& out, const Progress& p) {
       Layout copy = L;
-      out = straightenPaths(copy, options.straightening);
+      out = straightenPaths(copy, options.straightening, p);
       if (out.status)
         if (const LayoutCheck c = validateLayout(copy, euler); !c.status) out.status = c.status;
       return copy;
     };
     // The surfaces are independent: the target on a second thread.
     Layout t;
-    std::thread other([&] { t = straighten(r.layouts.target, r.straightenTarget); });
-    Layout s = straighten(r.layouts.source, r.straightenSource);
+    std::thread other([&] { t = straighten(r.layouts.target, r.straightenTarget, straightenPart.quiet()); });
+    Layout s = straighten(r.layouts.source, r.straightenSource, straightenPart);
     other.join();
+    if (progress.cancelled())
+      return r.status = Status::error(ErrorCode::Cancelled, "cancelled while straightening the paths"), r;
     if (r.straightenSource.status && r.straightenTarget.status) {
       r.layouts.source = std::move(s);
       r.layouts.target = std::move(t);
@@ -178,9 +204,9 @@ CrossParameterizationResult crossParameterize(const IndexedMesh& source, const s
     t1 = std::chrono::steady_clock::now();
   }
   for (Layout* L : {&r.layouts.source, &r.layouts.target}) splitCollinearFaces(*L);
-  r.sourceParam = parameterizePatches(r.layouts.source, options.parameterization);
+  r.sourceParam = parameterizePatches(r.layouts.source, options.parameterization, patchesPart.part(0.0, 0.5));
   if (!r.sourceParam.status) return r.status = r.sourceParam.status, r;
-  r.targetParam = parameterizePatches(r.layouts.target, options.parameterization);
+  r.targetParam = parameterizePatches(r.layouts.target, options.parameterization, patchesPart.part(0.5, 1.0));
   if (!r.targetParam.status) return r.status = r.targetParam.status, r;
   r.map = composeCrossMap(r.layouts.source, r.sourceParam, r.layouts.target, r.targetParam);
   if (!r.map.status) return r.status = r.map.status, r;
@@ -202,7 +228,7 @@ CrossParameterizationResult crossParameterize(const IndexedMesh& source, const s
     const SurfaceInDomain sourceInD(r.layouts.source, r.sourceParam, domain);
     const SurfaceInDomain targetInD(r.layouts.target, r.targetParam, domain);
     CrossMap optimized = optimizeCrossMap(source, target, sourceInD, targetInD, domain, options.optimization,
-                                          r.optimization, Progress{&progress, 40, 95});
+                                          r.optimization, mapPart);
     r.times.untangle = seconds(t1);
     if (!r.optimization.status) return r.status = r.optimization.status, r;
     r.map = std::move(optimized);
@@ -212,14 +238,19 @@ CrossParameterizationResult crossParameterize(const IndexedMesh& source, const s
     for (int v : ta) fixedT[v] = 1;
     // The two directions are independent: one on a second thread.
     std::thread inverse([&] {
-      r.untangleTarget =
-          untangleCrossMap(target, source, fixedT, r.map.targetToSource, r.map.targetImage, options.untangling);
+      r.untangleTarget = untangleCrossMap(target, source, fixedT, r.map.targetToSource, r.map.targetImage,
+                                          options.untangling, mapPart.quiet());
     });
-    r.untangleSource = untangleCrossMap(source, target, fixedS, r.map.sourceToTarget, r.map.sourceImage, options.untangling);
+    r.untangleSource =
+        untangleCrossMap(source, target, fixedS, r.map.sourceToTarget, r.map.sourceImage, options.untangling, mapPart);
     inverse.join();
+    if (progress.cancelled())
+      return r.status = Status::error(ErrorCode::Cancelled, "cancelled while removing flipped triangles"), r;
     r.times.untangle = seconds(t1);
   }
   t1 = std::chrono::steady_clock::now();
+  if (!progress.report(0.95, "measuring the distortion"))
+    return r.status = Status::error(ErrorCode::Cancelled, "cancelled before measuring the distortion"), r;
   r.metrics = computeDistortion(source, r.map.sourceImage, target, r.map.sourceToTarget);
   r.times.distortion += seconds(t1);
   if (!r.metrics.status) return r.status = r.metrics.status, r;

@@ -60,8 +60,13 @@ bool cutsOffDeadPiece(const RefinedMesh& mesh, const std::vector<int>& edgePath,
 }  // namespace
 
 SourceLayoutResult buildSourceLayout(const IndexedMesh& input, const std::vector<int>& anchors,
-                                     const SourceLayoutOptions& options) {
+                                     const SourceLayoutOptions& options, const Progress& progress) {
   SourceLayoutResult r;
+  const char* const stage = "tracing the base domain";
+  auto cancelled = [&] {
+    r.status = Status::error(ErrorCode::Cancelled, "cancelled while tracing the source layout");
+    return r;
+  };
   const int na = static_cast<int>(anchors.size());
   if (na < 3) {
     r.status = Status::error(ErrorCode::TooFewAnchors, "a layout needs at least 3 anchors");
@@ -79,6 +84,15 @@ SourceLayoutResult buildSourceLayout(const IndexedMesh& input, const std::vector
     return r;
   }
   r.voronoiSeconds = seconds(t0);
+  // A finished base domain is a triangulation of the surface with the anchors for vertices
+  // (multiple linkages allowed, no loops): V - E + F = chi and 3F = 2E, so it has exactly
+  // 3 (anchors - chi) paths; progress is the share of them traced.
+  const int chi = closedEulerCharacteristic(input);
+  const int needed = 3 * (na - chi);
+  auto report = [&](int traced) {
+    return progress.report(0.1 + 0.9 * traced / std::max(needed, 1), stage);
+  };
+  if (!report(0)) return cancelled();
   t0 = std::chrono::steady_clock::now();
   PathTracer tracer(L.mesh, options.edgeNodes);
   tracer.faceLabel() = std::move(clusters);
@@ -92,6 +106,7 @@ SourceLayoutResult buildSourceLayout(const IndexedMesh& input, const std::vector
   std::stable_sort(order.begin(), order.end(),
                    [&](int a, int b) { return r.cuts.cuts[a].length > r.cuts.cuts[b].length; });
   for (int c : order) {
+    if (!report(r.cutPaths)) return cancelled();
     const Cut& cut = r.cuts.cuts[c];
     PathQuery q;
     q.source = anchors[cut.i];
@@ -117,17 +132,13 @@ SourceLayoutResult buildSourceLayout(const IndexedMesh& input, const std::vector
 
   // 2. Triangulate every region that is not a triangle, with paths searched inside it.
   const int maxExtra = options.maxTriangulationPaths >= 0 ? options.maxTriangulationPaths : 4 * na + 64;
-  // A finished base domain is a triangulation of the surface with the anchors for vertices
-  // (multiple linkages allowed, no loops): V - E + F = chi and 3F = 2E, so it has exactly
-  // 3 (anchors - chi) paths. Every path the triangulation adds counts against `maxExtra`,
+  // Every path the triangulation adds counts against `maxExtra`,
   // even one later dropped with an empty 2-gon, so when the cut paths leave more than that to
   // add, the layout cannot be finished: say so now instead of searching until the cap is hit
   // (cheese, genus 133, with 12 anchors: 732 paths left to add against 112 allowed; the search
   // ran past 15 minutes, taking back link after link, its refined mesh growing threefold in the
   // first minute).
   {
-    const int chi = closedEulerCharacteristic(input);
-    const int needed = 3 * (na - chi);
     if (needed - r.cutPaths > maxExtra) {
       const int genus = (2 - chi) / 2;
       r.status = Status::error(
@@ -155,6 +166,7 @@ SourceLayoutResult buildSourceLayout(const IndexedMesh& input, const std::vector
   bool analyzed = false;
   int bad = -1;
   for (int iteration = 0;; ++iteration) {
+    if (!report(r.cutPaths - r.removedPaths + r.triangulationPaths)) return cancelled();
     refreshAnchorOf();
     if (!analyzed)
       rm = analyzeRegions(L.mesh, tracer.edgePath(), anchorOf), analyzed = true;

@@ -73,8 +73,12 @@ Status alignPatches(const Layout& src, Layout& L) {
 }
 
 TargetLayoutResult buildTargetLayout(const Layout& src, const IndexedMesh& target, const std::vector<int>& anchors,
-                                     const TargetLayoutOptions& options) {
+                                     const TargetLayoutOptions& options, const Progress& progress) {
   TargetLayoutResult r;
+  auto cancelled = [&] {
+    r.status = Status::error(ErrorCode::Cancelled, "cancelled while tracing the target layout");
+    return r;
+  };
   const int na = src.anchorCount();
   if (static_cast<int>(anchors.size()) != na) {
     r.status = Status::error(ErrorCode::InvalidArgument, "the target has " + std::to_string(anchors.size()) +
@@ -93,6 +97,7 @@ TargetLayoutResult buildTargetLayout(const Layout& src, const IndexedMesh& targe
     return r;
   }
   r.voronoiSeconds = seconds(t0);
+  if (!progress.report(0.1, "tracing the base domain on the target")) return cancelled();
   t0 = std::chrono::steady_clock::now();
   PathTracer tracer(L.mesh, options.edgeNodes);
   tracer.faceLabel() = std::move(clusters);
@@ -306,7 +311,7 @@ TargetLayoutResult buildTargetLayout(const Layout& src, const IndexedMesh& targe
 
   bool force = false;
   while (!pending.empty()) {
-    bool progress = false;
+    bool advanced = false;
     for (size_t k = 0; k < pending.size();) {
       const int e = pending[k];
       if (!force && waitsForPassedAnchor(e)) {
@@ -330,10 +335,13 @@ TargetLayoutResult buildTargetLayout(const Layout& src, const IndexedMesh& targe
       embedded[e] = 1;
       setSourceEdge(e, e);
       pending.erase(pending.begin() + static_cast<long>(k));
-      progress = true;
+      if (!progress.report(0.1 + 0.9 * (ne - static_cast<double>(pending.size())) / std::max(ne, 1),
+                           "tracing the base domain on the target"))
+        return cancelled();
+      advanced = true;
       force = false;
     }
-    if (!progress) {
+    if (!advanced) {
       if (!force) {
         force = true;
         continue;

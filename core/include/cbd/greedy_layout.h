@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "cbd/layout.h"
+#include "cbd/progress.h"
 #include "cbd/path_tracer.h"
 
 namespace cbd {
@@ -47,10 +48,11 @@ struct GreedyLayoutResult {
 };
 
 /// Build common base domains on a source/target pair with corresponding anchor vertices
-/// (validated surfaces of the same genus). Errors: InvalidArgument, LayoutFailed.
+/// (validated surfaces of the same genus). Errors: InvalidArgument, LayoutFailed, Cancelled
+/// (`progress` said stop; reported per pair searched and per edge linked).
 GreedyLayoutResult buildGreedyLayout(const IndexedMesh& source, const std::vector<int>& sourceAnchors,
                                      const IndexedMesh& target, const std::vector<int>& targetAnchors,
-                                     const GreedyLayoutOptions& options = {});
+                                     const GreedyLayoutOptions& options = {}, const Progress& progress = {});
 
 /// Result of `flipLayoutPaths`.
 struct PathFlippingResult {

@@ -47,6 +47,7 @@
 
 #include "cbd/mesh.h"
 #include "cbd/parameterization.h"
+#include "cbd/progress.h"
 #include "cbd/target_normals.h"
 
 namespace cbd {
@@ -157,9 +158,11 @@ bool relayAnchorDisk(const IndexedMesh& source, const IndexedMesh& target, const
 ///                         coordinates (face -1: unreferenced, ignored)
 /// @param[in,out] image    per source vertex: the 3D point of `onTarget`
 /// Pre-condition: `target` passed `validateMesh` (closed manifold, no degenerate face).
-/// Never fails on valid input; `flippedAfter` > 0 says what could not be untangled.
+/// Never fails on valid input; `flippedAfter` > 0 says what could not be untangled. Cancelled
+/// when `progress` says stop (the map is then partly moved and must be discarded).
 MapUntangleResult untangleCrossMap(const IndexedMesh& source, const IndexedMesh& target,
                                    const std::vector<char>& fixed, std::vector<FacePoint>& onTarget,
-                                   std::vector<Vec3>& image, const MapUntangleOptions& options = {});
+                                   std::vector<Vec3>& image, const MapUntangleOptions& options = {},
+                                   const Progress& progress = {});
 
 }  // namespace cbd

@@ -13,6 +13,7 @@
 #include <Eigen/Core>
 
 #include "cbd/layout.h"
+#include "cbd/progress.h"
 
 namespace cbd {
 
@@ -52,7 +53,8 @@ bool meanValueMap(const RefinedMesh& mesh, const std::vector<int>& faces,
 
 /// Map every patch of `layout` onto the domain triangle. Pre-condition: `validateLayout` holds
 /// and `splitCollinearFaces` was applied. Errors: InternalError (a singular patch system).
-PatchParameterization parameterizePatches(const Layout& layout, const ParameterizationOptions& options = {});
+PatchParameterization parameterizePatches(const Layout& layout, const ParameterizationOptions& options = {},
+                                          const Progress& progress = {});
 
 /// Point location in the patch parameterizations of one layout: which refined-mesh face of
 /// patch p holds a point of the domain triangle (a uniform grid per patch).

@@ -17,6 +17,7 @@
 /// paths in the same spirit (REFERENCES.md: harmonic path smoothing of `jsb/LayoutEmbedding`).
 
 #include "cbd/layout.h"
+#include "cbd/progress.h"
 
 namespace cbd {
 
@@ -27,8 +28,8 @@ struct PathStraighteningOptions {
 
 /// What `straightenPaths` did.
 struct PathStraighteningResult {
-  Status status;          ///< InternalError when a path could not be cut in (the layout is then
-                          ///< partly straightened and must be discarded)
+  Status status;          ///< InternalError when a path could not be cut in, or Cancelled (the
+                          ///< layout is then partly straightened and must be discarded)
   int straightened = 0;   ///< paths replaced
   int skipped = 0;        ///< paths left as they were (both sides in one patch, or the segment
                           ///< would touch the quadrilateral's boundary)
@@ -38,7 +39,9 @@ struct PathStraighteningResult {
 
 /// Straighten every path of a valid layout (see the file comment). Keeps `edges`, `patches`,
 /// `rotation`, `facePatch`, `edgePath` and `faceCluster` consistent; `validateLayout` holds
-/// afterwards whenever the status is ok.
-PathStraighteningResult straightenPaths(Layout& layout, const PathStraighteningOptions& options = {});
+/// afterwards whenever the status is ok. Cancelled when `progress` says stop (reported per path;
+/// the layout is then partly straightened and must be discarded, as after an error).
+PathStraighteningResult straightenPaths(Layout& layout, const PathStraighteningOptions& options = {},
+                                        const Progress& progress = {});
 
 }  // namespace cbd

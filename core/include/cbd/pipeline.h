@@ -69,6 +69,20 @@ struct CrossParameterizationOptions {
   std::vector<std::string> anchorNames;
 };
 
+/// The accepted values of an integer option: one place for the front ends' ranges and `validate`.
+struct IntRange {
+  int lo, hi;
+  constexpr bool contains(int v) const { return v >= lo && v <= hi; }
+};
+inline constexpr IntRange kMinEdgeNodesRange{1, 16};        ///< EdgeNodeOptions::minEdgeNodes
+inline constexpr IntRange kStraightenRoundsRange{0, 8};     ///< every round splits mesh edges
+inline constexpr IntRange kSmoothingIterationsRange{0, 1000};
+
+/// InvalidArgument naming the first option out of its range (edge nodes, straightening rounds,
+/// smoothing iterations, the detour thresholds); `buildLayouts` and `crossParameterize` check it
+/// first, so every front end gets the same message.
+Status validate(const CrossParameterizationOptions& options);
+
 /// Seconds spent in each stage.
 struct StageTimes {
   double voronoi = 0.0;          ///< Voronoi clusters on both surfaces (0 for greedy)
@@ -112,9 +126,11 @@ struct LayoutPair {
 double lengthDetour(const Layout& source, const Layout& target);
 
 /// Build both layouts with the chosen method and check them (validateLayout on both surfaces,
-/// checkIsomorphic). `euler` is the surfaces' Euler characteristic.
+/// checkIsomorphic). `euler` is the surfaces' Euler characteristic. Cancelled when `progress`
+/// says stop.
 LayoutPair buildLayouts(const IndexedMesh& source, const std::vector<int>& sourceAnchors, const IndexedMesh& target,
-                        const std::vector<int>& targetAnchors, int euler, const CrossParameterizationOptions& options);
+                        const std::vector<int>& targetAnchors, int euler, const CrossParameterizationOptions& options,
+                        const Progress& progress = {});
 
 /// Everything `crossParameterize` computed.
 struct CrossParameterizationResult {
@@ -140,11 +156,11 @@ struct CrossParameterizationResult {
 };
 
 /// Cross-parameterize two validated surfaces of equal genus with corresponding anchors.
-/// `progress` (optional) sees the run's percentage and stage names; when it returns false the
-/// run stops with ErrorCode::Cancelled.
+/// `progress` (optional) sees the run's percentage and stage names through every stage; when it
+/// says stop the run ends with ErrorCode::Cancelled.
 CrossParameterizationResult crossParameterize(const IndexedMesh& source, const std::vector<int>& sourceAnchors,
                                               const IndexedMesh& target, const std::vector<int>& targetAnchors,
                                               int euler, const CrossParameterizationOptions& options = {},
-                                              const ProgressCallback& progress = {});
+                                              const Progress& progress = {});
 
 }  // namespace cbd

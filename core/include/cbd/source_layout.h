@@ -10,6 +10,7 @@
 
 #include "cbd/layout.h"
 #include "cbd/path_tracer.h"
+#include "cbd/progress.h"
 #include "cbd/voronoi.h"
 
 namespace cbd {
@@ -42,8 +43,9 @@ struct SourceLayoutResult {
 };
 
 /// Build the base domain on a validated closed surface with anchors at the given vertices
-/// (distinct, at least 3). Errors: InvalidArgument (bad anchor indices), LayoutFailed.
+/// (distinct, at least 3). Errors: InvalidArgument (bad anchor indices), LayoutFailed, Cancelled
+/// (`progress` said stop; reported per path, as the share of the 3 (anchors - chi) paths).
 SourceLayoutResult buildSourceLayout(const IndexedMesh& mesh, const std::vector<int>& anchorVertices,
-                                     const SourceLayoutOptions& options = {});
+                                     const SourceLayoutOptions& options = {}, const Progress& progress = {});
 
 }  // namespace cbd

@@ -25,6 +25,7 @@
 #include <vector>
 
 #include "cbd/layout.h"
+#include "cbd/progress.h"
 #include "cbd/path_tracer.h"
 #include "cbd/voronoi.h"
 
@@ -56,9 +57,11 @@ struct TargetLayoutResult {
 };
 
 /// Trace the source layout on the target surface. `targetAnchors[i]` corresponds to source
-/// anchor i. Errors: InvalidArgument (anchor count or indices), LayoutFailed.
+/// anchor i. Errors: InvalidArgument (anchor count or indices), LayoutFailed, Cancelled
+/// (`progress` said stop; reported per embedded edge).
 TargetLayoutResult buildTargetLayout(const Layout& source, const IndexedMesh& target,
-                                     const std::vector<int>& targetAnchors, const TargetLayoutOptions& options = {});
+                                     const std::vector<int>& targetAnchors, const TargetLayoutOptions& options = {},
+                                     const Progress& progress = {});
 
 /// Reorder the patches of `target` (same edge ids as `source`) so that patch k has the corners
 /// and sides of source patch k, starting at the same corner; `facePatch` follows.
