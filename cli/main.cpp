@@ -1,14 +1,14 @@
-// cbd: command-line front end. Arguments -> options -> core -> files -> exit code.
-// Every failure is one line on stderr and a distinct exit code (see README, "Exit codes").
+// cbd: command-line front end. Parse the arguments, call one job (cbd/jobs.h), print its report
+// (cbd/report.h). Every failure is one line on stderr and a distinct exit code (cbd exit-codes).
 
 #include <algorithm>
+#include <atomic>
 #include <cctype>
-#include <chrono>
+#include <csignal>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
-#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -16,75 +16,34 @@
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
-#include <nlohmann/json.hpp>
 
-#include "cbd/anchor_sampling.h"
-#include "cbd/layout_io.h"
-#include "cbd/map_io.h"
-#include "cbd/pipeline.h"
-#include "cbd/validate_input.h"
+#include "cbd/files.h"
+#include "cbd/jobs.h"
+#include "cbd/report.h"
 
 namespace {
 
-using nlohmann::json;
-
-json meshJson(const cbd::MeshReport& m) {
-  return json{{"vertices", m.vertices},
-              {"faces", m.faces},
-              {"genus", m.genus},
-              {"unreferenced_vertices", m.unreferencedVertices},
-              {"bbox_diagonal", m.bboxDiagonal},
-              {"enclosed_volume", m.enclosedVolume},
-              {"warnings", m.warnings}};
-}
+using cbd::Json;
 
 /// With `--json -`: the real standard output, kept for the report alone, while the human-readable
 /// log goes to standard error (so that stdout parses as JSON).
 int jsonStdout = -1;
-/// The output folders this run created, innermost first; a failed run removes those still empty.
-std::vector<std::filesystem::path> createdOutputFolders;
 
-bool writeJson(const std::string& path, const json& j) {
+bool writeJson(const std::string& path, const Json& j) {
   if (path.empty()) return true;
-  if (path == "-") {
-    const std::string text = j.dump(2, ' ', false, json::error_handler_t::replace) + "\n";
-    if (jsonStdout < 0) {
-      std::cout << text;
-      return static_cast<bool>(std::cout.flush());
-    }
-    std::fflush(stdout);
-    size_t done = 0;
-    while (done < text.size()) {
-      const ssize_t n = ::write(jsonStdout, text.data() + done, text.size() - done);
-      if (n <= 0) return false;
-      done += static_cast<size_t>(n);
-    }
-    return true;
+  const std::string text = j.dump(2, ' ', false, Json::error_handler_t::replace) + "\n";
+  if (path != "-") return cbd::writeTextFile(path, text).ok();
+  if (jsonStdout < 0) {
+    std::cout << text;
+    return static_cast<bool>(std::cout.flush());
   }
-  namespace fs = std::filesystem;
-  const fs::path target(path);
-  const fs::path tmp = cbd::writeTarget(path);
-  {
-    std::ofstream out(tmp);
-    if (!out) return false;
-    out << j.dump(2, ' ', false, json::error_handler_t::replace) << "\n";
-    if (!out.good()) return false;
+  std::fflush(stdout);
+  size_t done = 0;
+  while (done < text.size()) {
+    const ssize_t n = ::write(jsonStdout, text.data() + done, text.size() - done);
+    if (n <= 0) return false;
+    done += static_cast<size_t>(n);
   }
-  if (tmp == target) return true;  // a device, written in place
-  std::error_code ec, ignored;
-  fs::rename(tmp, target, ec);  // fails onto a folder, which is reported as such
-  if (ec) fs::remove(tmp, ignored);
-  return !ec;
-}
-
-/// Whether a new file can be created in `dir` (a probe file made by mkstemp, removed at once):
-/// a permission check that holds for root, read-only mounts and pseudo file systems alike.
-bool canCreateIn(const std::filesystem::path& dir) {
-  std::string probe = (dir / ".cbd-probe-XXXXXX").string();
-  const int fd = ::mkstemp(probe.data());
-  if (fd < 0) return false;
-  ::close(fd);
-  ::unlink(probe.c_str());
   return true;
 }
 
@@ -107,10 +66,10 @@ void writeParseErrorReport(CLI::App& app, int argc, char** argv, const std::stri
     std::error_code ec;
     if (path != "-" && fs::exists(path, ec) && cbd::writeTarget(path) != path) {
       std::ifstream existing(path);
-      const json earlier = json::parse(existing, nullptr, /*allow_exceptions=*/false);
+      const Json earlier = Json::parse(existing, nullptr, /*allow_exceptions=*/false);
       if (!fs::is_regular_file(path, ec) || !earlier.is_object() || !earlier.contains("status")) return;
     }
-    json j;
+    Json j;
     j["status"] = cbd::errorCodeName(cbd::ErrorCode::InvalidArgument);
     j["message"] = message;
     writeJson(path, j);
@@ -118,61 +77,13 @@ void writeParseErrorReport(CLI::App& app, int argc, char** argv, const std::stri
   }
 }
 
-/// Before the computation (so that a run does not compute for minutes and then fail to save):
-/// create the output folder when missing and check that it takes new files.
-cbd::Status prepareOutputFolder(const std::string& outDir) {
-  namespace fs = std::filesystem;
-  std::error_code ec;
-  if (fs::exists(outDir, ec) && !fs::is_directory(outDir, ec))
-    return cbd::Status::error(cbd::ErrorCode::OutputError, "output folder '" + outDir + "' is a file: choose another --out");
-  // The folders that do not exist yet, innermost first ("a/b/.." creates a and a/b).
-  std::vector<fs::path> missing;
-  for (fs::path p = fs::absolute(outDir, ec); !p.empty() && p != p.parent_path() && !fs::exists(p, ec);
-       p = p.parent_path()) {
-    const std::string name = p.filename().string();
-    if (!name.empty() && name != "." && name != "..") missing.push_back(p);
-  }
-  std::error_code created;
-  fs::create_directories(outDir, created);
-  if (!fs::is_directory(outDir, ec))
-    return cbd::Status::error(cbd::ErrorCode::OutputError,
-                              "cannot create output folder '" + outDir + "'" +
-                                  (created ? " (" + created.message() + ")" : "") + ": choose --out under a writable folder");
-  createdOutputFolders = missing;
-  if (!canCreateIn(outDir))
-    return cbd::Status::error(cbd::ErrorCode::OutputError,
-                              "cannot write into output folder '" + outDir + "': check its permissions, or choose another --out");
-  return cbd::Status::success();
-}
-
-/// The same for the JSON report (after the output folder, which may hold it): its folder exists
-/// and takes new files, and the path is not a folder.
-cbd::Status checkReportPath(const std::string& jsonPath) {
-  namespace fs = std::filesystem;
-  if (jsonPath.empty() || jsonPath == "-") return cbd::Status::success();
-  std::error_code ec;
-  const fs::path report(jsonPath);
-  if (cbd::writeTarget(jsonPath) == jsonPath) return cbd::Status::success();  // a device: written in place
-  const fs::path folder = report.parent_path().empty() ? fs::path(".") : report.parent_path();
-  if (fs::is_directory(report, ec) || !fs::is_directory(folder, ec) || !canCreateIn(folder))
-    return cbd::Status::error(cbd::ErrorCode::OutputError,
-                              "cannot write JSON report '" + jsonPath +
-                                  "' (check that its folder exists and is writable, and that it does not name a folder)");
-  return cbd::Status::success();
-}
-
-int finish(const cbd::Status& status, json& j, const std::string& jsonPath) {
+/// The report's status, the error line, the exit code.
+int finish(const cbd::Status& status, Json j, const std::string& jsonPath) {
   j["status"] = cbd::errorCodeName(status.code);
   j["message"] = status.message;
   const bool reported = writeJson(jsonPath, j);
   // The run's own error first, also when the report cannot tell it.
   if (!status.ok()) std::cerr << "cbd: error: " << cbd::errorCodeName(status.code) << ": " << status.message << "\n";
-  // A failed run leaves no empty output folder of its own making behind.
-  if (!status.ok())
-    for (const std::filesystem::path& dir : createdOutputFolders) {
-      std::error_code ec;
-      if (!std::filesystem::is_empty(dir, ec) || ec || !std::filesystem::remove(dir, ec)) break;
-    }
   if (!reported) {
     std::cerr << "cbd: error: output_error: cannot write JSON report '" << jsonPath
               << "' (check that its folder exists and is writable, and that it does not name a folder)\n";
@@ -180,6 +91,56 @@ int finish(const cbd::Status& status, json& j, const std::string& jsonPath) {
   }
   return cbd::exitCode(status.code);
 }
+
+void print(const std::vector<std::string>& lines) {
+  for (const std::string& l : lines) std::printf("%s\n", l.c_str());
+}
+
+void warn(const std::vector<std::string>& warnings) {
+  for (const std::string& w : warnings) std::fprintf(stderr, "cbd: warning: %s\n", w.c_str());
+}
+
+// --- progress on the terminal, and Ctrl-C
+
+volatile std::sig_atomic_t interrupted = 0;
+
+extern "C" void onInterrupt(int signal) {
+  interrupted = 1;
+  std::signal(signal, SIG_DFL);  // a second Ctrl-C ends the process at once
+}
+
+/// A one-line bar on stderr when it is a terminal (silent otherwise, so that logs and `--json -`
+/// stay clean); Ctrl-C or SIGTERM cancels the job, which then writes nothing.
+class TerminalProgress {
+ public:
+  TerminalProgress() : tty_(::isatty(STDERR_FILENO) == 1) {
+    std::signal(SIGINT, onInterrupt);
+    std::signal(SIGTERM, onInterrupt);
+  }
+  ~TerminalProgress() { clear(); }
+  cbd::Progress progress() {
+    return cbd::Progress([this](int percent, const char* stage) {
+      if (tty_) {
+        const int width = 30, done = percent * width / 100;
+        std::fprintf(stderr, "\r\033[K[%s%s] %3d%% %s", std::string(static_cast<size_t>(done), '#').c_str(),
+                     std::string(static_cast<size_t>(width - done), '.').c_str(), percent, stage);
+        std::fflush(stderr);
+        shown_ = true;
+      }
+      return interrupted == 0;
+    });
+  }
+  void clear() {
+    if (!shown_) return;
+    std::fprintf(stderr, "\r\033[K");
+    std::fflush(stderr);
+    shown_ = false;
+  }
+
+ private:
+  bool tty_;
+  bool shown_ = false;
+};
 
 /// A number in [lo, hi]; NaN, which CLI::Range lets through (every comparison with it is
 /// false), is refused with the option's name.
@@ -203,66 +164,23 @@ CLI::Validator finiteRange(double lo, double hi) {
       "FLOAT in [" + CLI::detail::to_string(lo) + " - " + CLI::detail::to_string(hi) + "]");
 }
 
-struct PairArgs {
+CLI::Range range(cbd::IntRange r) { return CLI::Range(r.lo, r.hi); }
+
+// --- commands
+
+struct CheckArgs {
   cbd::InputFiles files;
   double snapTolerance = 0.01;
   std::string jsonPath;
 };
 
-void addPairOptions(CLI::App* cmd, PairArgs& a) {
-  cmd->add_option("--source,-s", a.files.sourceMesh, "source mesh (.ply, .off, .obj, .stl)")->required();
-  cmd->add_option("--target,-t", a.files.targetMesh, "target mesh (.ply, .off, .obj, .stl)")->required();
-  cmd->add_option("--source-anchors", a.files.sourceAnchors,
-                  "source anchors: MeshLab PickPoints .pp, 'index [x y z]' lines, or 'name x y z' lines")
-      ->required();
-  cmd->add_option("--target-anchors", a.files.targetAnchors, "target anchors, same formats; matched by name")
-      ->required();
-  cmd->add_option("--snap-tolerance", a.snapTolerance,
-                  "largest allowed anchor-to-vertex distance, as a fraction of the bounding-box diagonal")
-      ->capture_default_str()
-      ->check(finiteRange(0.0, 1.0));
-  cmd->add_option("--json", a.jsonPath, "also write a JSON report to this file ('-': to stdout, the log then goes to stderr)");
-}
-
-void printMesh(const char* role, const std::string& path, const cbd::MeshReport& m) {
-  std::printf("%-7s %s: %d vertices, %d faces, genus %d\n", role, path.c_str(), m.vertices, m.faces, m.genus);
-  for (const auto& w : m.warnings) std::printf("  warning: %s\n", w.c_str());
-}
-
-int runCheck(const PairArgs& a) {
+int runCheck(const CheckArgs& a) {
   cbd::ValidationOptions opt;
   opt.snapTolerance = a.snapTolerance;
   cbd::LoadedInput in;
   cbd::loadAndValidate(a.files, opt, in);
-  const cbd::InputReport& r = in.report;
-  json j;
-  j["source"] = meshJson(r.source);
-  j["target"] = meshJson(r.target);
-  j["source"]["anchors"] = r.anchors.size();
-  j["target"]["anchors"] = r.anchors.size();
-  if (r.status) {
-    printMesh("source", a.files.sourceMesh, r.source);
-    printMesh("target", a.files.targetMesh, r.target);
-    double worstS = 0, worstT = 0;
-    json list = json::array();
-    for (int k = 0; k < r.anchors.size(); ++k) {
-      const auto& s = r.anchors.source[k];
-      const auto& t = r.anchors.target[k];
-      worstS = std::max(worstS, s.snapDistance);
-      worstT = std::max(worstT, t.snapDistance);
-      list.push_back({{"name", r.anchors.names[k]},
-                      {"source_vertex", s.vertex},
-                      {"target_vertex", t.vertex},
-                      {"source_snap", s.snapDistance},
-                      {"target_snap", t.snapDistance}});
-    }
-    j["anchors"] = list;
-    std::printf("anchors %d pairs matched by name; largest snap distance %.3g%% (source), %.3g%% (target) "
-                "of the bbox diagonal\n",
-                r.anchors.size(), 100 * worstS, 100 * worstT);
-    std::printf("ok: the pair can be processed\n");
-  }
-  return finish(r.status, j, a.jsonPath);
+  if (in.report.status) print(cbd::checkLines(a.files, in.report));
+  return finish(in.report.status, cbd::checkJson(in.report), a.jsonPath);
 }
 
 /// Options shared by `layout` and `map`.
@@ -279,314 +197,62 @@ struct RunArgs {
   bool noUntangle = false;
   std::string mapStage = "untangle";
   bool flipPaths = false;
+
+  cbd::InputFiles files() const { return {mesh, target, anchors, targetAnchors}; }
+  cbd::ValidationOptions validation() const {
+    cbd::ValidationOptions v;
+    v.snapTolerance = snapTolerance;
+    return v;
+  }
+  cbd::CrossParameterizationOptions pipeline() const {
+    cbd::CrossParameterizationOptions o;
+    o.method = method == "greedy" ? cbd::LayoutMethod::Greedy : cbd::LayoutMethod::Voronoi;
+    o.edgeNodes.minEdgeNodes = singleEdgeNode ? 1 : minEdgeNodes;
+    o.edgeNodes.adaptive = !singleEdgeNode;
+    o.smoothing.iterations = smooth;
+    o.straightening.rounds = straighten;
+    o.untangle = !noUntangle;
+    o.mapStage = mapStage == "optimize" ? cbd::MapStage::Optimize : cbd::MapStage::Untangle;
+    o.flipPaths = flipPaths;
+    return o;
+  }
+  cbd::LayoutJob layoutJob() const { return {files(), validation(), pipeline(), out, jsonPath}; }
+  cbd::MapJob mapJob() const { return {files(), validation(), pipeline(), out, morph, jsonPath}; }
 };
 
-double elapsed(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
-
-/// Both output checks before a run; the exit code when one fails. A report that can be written
-/// still tells why the output folder cannot.
-std::optional<int> prepareOutputs(const RunArgs& a, json& j) {
-  if (cbd::Status s = prepareOutputFolder(a.out); !s) return finish(s, j, a.jsonPath);
-  if (cbd::Status s = checkReportPath(a.jsonPath); !s) return finish(s, j, "");
-  return std::nullopt;
-}
-
-/// The pipeline's options from the command line; `names`: the anchors' names, for messages.
-cbd::CrossParameterizationOptions pipelineOptions(const RunArgs& a, const std::vector<std::string>& names = {}) {
-  cbd::CrossParameterizationOptions o;
-  o.anchorNames = names;
-  o.method = a.method == "greedy" ? cbd::LayoutMethod::Greedy : cbd::LayoutMethod::Voronoi;
-  o.edgeNodes.minEdgeNodes = a.singleEdgeNode ? 1 : a.minEdgeNodes;
-  o.edgeNodes.adaptive = !a.singleEdgeNode;
-  o.smoothing.iterations = a.smooth;
-  o.straightening.rounds = a.straighten;
-  o.untangle = !a.noUntangle;
-  o.mapStage = a.mapStage == "optimize" ? cbd::MapStage::Optimize : cbd::MapStage::Untangle;
-  o.flipPaths = a.flipPaths;
-  return o;
-}
-
-/// Load and validate a source/target pair; fills the JSON input keys.
-cbd::Status loadPair(const RunArgs& a, cbd::LoadedInput& in, std::vector<int>& sa, std::vector<int>& ta, json& j) {
-  cbd::ValidationOptions vopt;
-  vopt.snapTolerance = a.snapTolerance;
-  cbd::loadAndValidate({a.mesh, a.target, a.anchors, a.targetAnchors}, vopt, in);
-  j["source"] = meshJson(in.report.source);
-  j["target"] = meshJson(in.report.target);
-  if (!in.report.status) return in.report.status;
-  j["source"]["anchors"] = j["target"]["anchors"] = in.report.anchors.size();
-  for (const auto& s : in.report.anchors.source) sa.push_back(s.vertex);
-  for (const auto& s : in.report.anchors.target) ta.push_back(s.vertex);
-  for (const auto* m : {&in.report.source, &in.report.target})
-    for (const auto& w : m->warnings) std::fprintf(stderr, "cbd: warning: %s\n", w.c_str());
-  return cbd::Status::success();
-}
-
-json layoutJson(const cbd::LayoutPair& p) {
-  json l = {{"edges", p.source.edges.size()},
-            {"patches", p.source.patches.size()},
-            {"multi_linkages", p.source.multipleLinkages()},
-            {"detour", p.detour},
-            {"warnings", p.warnings}};
-  if (p.method == cbd::LayoutMethod::Voronoi) {
-    // "diagram": whose Voronoi diagram gave the layout (the target's when the source's detoured).
-    l["diagram"] = p.reversed ? "target" : "source";
-    l["same_surface"] = p.sameSurface;
-    if (p.triedReverse) l["other_direction_detour"] = p.reverseDetour;
-    l["flips"] = p.flips;
-    l["cut_paths"] = p.sourceStats.cutPaths;
-    l["triangulation_paths"] = p.sourceStats.triangulationPaths;
-    l["removed_paths"] = p.sourceStats.removedPaths;
-    l["rejected_paths"] = p.sourceStats.rejectedPaths;
-    l["target"] = {{"in_clusters", p.targetStats.embeddedInClusters},
-                   {"in_region", p.targetStats.embeddedInRegion},
-                   {"postponements", p.targetStats.postponements},
-                   {"waited_for_passed_anchors", p.targetStats.waitedForPassedAnchors},
-                   {"rejected_paths", p.targetStats.rejectedPaths}};
-  } else {
-    const auto& g = p.greedyStats;
-    l["greedy"] = {{"candidates", g.candidates}, {"tried", g.tried},         {"accepted", g.accepted},
-                   {"rejected", g.rejected},     {"completion_paths", g.completionPaths},
-                   {"completion_rejected", g.completionRejected}, {"flips", g.flips}};
-  }
-  return l;
-}
-
-json timesJson(const cbd::StageTimes& t) {
-  return {{"voronoi", t.voronoi},         {"source_layout", t.sourceLayout},
-          {"target_layout", t.targetLayout}, {"straighten", t.straighten},
-          {"parameterization", t.parameterization},
-          {"untangle", t.untangle},       {"distortion", t.distortion},   {"total", t.total}};
-}
-
-void printLayout(const cbd::LayoutPair& p) {
-  for (const auto& w : p.warnings) std::fprintf(stderr, "cbd: warning: %s\n", w.c_str());
-  if (p.method == cbd::LayoutMethod::Voronoi) {
-    std::printf("layout  voronoi: %zu edges (%d across Voronoi cuts, %d triangulating), %zu patches, %d multiple linkages\n",
-                p.source.edges.size(), p.sourceStats.cutPaths - p.sourceStats.removedPaths,
-                p.sourceStats.triangulationPaths, p.source.patches.size(), p.source.multipleLinkages());
-    if (p.sameSurface)
-      std::printf("        target: the source itself (same vertices, faces and anchors): the same layout\n");
-    else
-      std::printf("        %s: %d paths inside the two clusters, %d in the whole region; detour %.2f\n",
-                  p.reversed ? "traced on the source" : "target", p.targetStats.embeddedInClusters,
-                  p.targetStats.embeddedInRegion, p.detour);
-    if (p.reversed)
-      std::printf("        (the layout traced from the source's diagram detoured by %.2f: this one comes from the "
-                  "target's Voronoi diagram)\n", p.reverseDetour);
-    if (p.flips > 0) std::printf("        path flipping: %d edges replaced on both surfaces\n", p.flips);
-  } else {
-    const auto& g = p.greedyStats;
-    std::printf("layout  greedy: %zu edges, %zu patches; %d candidate pairs, %d traced, %d accepted, %d rejected, "
-                "%d completion paths (%d undone), %d flips\n",
-                p.source.edges.size(), p.source.patches.size(), g.candidates, g.tried, g.accepted, g.rejected,
-                g.completionPaths, g.completionRejected, g.flips);
-  }
-}
-
-int runSingleLayout(const RunArgs& a) {
-  json j;
-  const auto t0 = std::chrono::steady_clock::now();
-  cbd::Mesh mesh;
-  cbd::LoadResult lr = cbd::loadMesh(a.mesh, mesh);
-  if (!lr.status) return finish(lr.status, j, a.jsonPath);
-  const cbd::IndexedMesh source = cbd::toIndexed(mesh);
-  cbd::MeshReport rep = cbd::validateMesh(source, "source", lr.hadPolygons);
-  cbd::nameMeshFile(rep, a.mesh);
-  rep.warnings.insert(rep.warnings.end(), lr.warnings.begin(), lr.warnings.end());
-  j["source"] = meshJson(rep);
-  if (!rep.status) return finish(rep.status, j, a.jsonPath);
-  for (const auto& w : rep.warnings) std::fprintf(stderr, "cbd: warning: %s\n", w.c_str());
-  const cbd::AnchorSet set = cbd::readAnchors(a.anchors);
-  if (!set.status) return finish(set.status, j, a.jsonPath);
-  std::vector<cbd::SnappedAnchor> snapped;
-  if (cbd::Status s = cbd::snapAnchors(source, set, a.snapTolerance, "source", snapped); !s) return finish(s, j, a.jsonPath);
-  j["source"]["anchors"] = snapped.size();
-  if (snapped.size() < 3)
-    return finish(cbd::Status::error(cbd::ErrorCode::TooFewAnchors,
-                                     a.anchors + ": " + std::to_string(snapped.size()) + " anchors" +
-                                         (set.skippedInactive > 0 ? " (and " + std::to_string(set.skippedInactive) +
-                                                                        " inactive points, active=\"0\", left out)"
-                                                                  : std::string()) +
-                                         "; a layout needs at least 3"),
-                  j, a.jsonPath);
-  std::vector<int> anchors;
-  cbd::SourceLayoutOptions opt;
-  for (const auto& s : snapped) anchors.push_back(s.vertex), opt.anchorNames.push_back(s.name);
-  if (const std::optional<int> rc = prepareOutputs(a, j)) return *rc;
-  opt.edgeNodes = pipelineOptions(a).edgeNodes;
-  const cbd::SourceLayoutResult r = cbd::buildSourceLayout(source, anchors, opt);
-  j["timing_s"] = {{"voronoi", r.voronoiSeconds}, {"source_layout", r.layoutSeconds}};
-  if (!r.status) return finish(r.status, j, a.jsonPath);
-  if (const cbd::LayoutCheck c = cbd::validateLayout(r.layout, rep.eulerCharacteristic); !c.status)
-    return finish(c.status, j, a.jsonPath);
-  if (cbd::Status s = cbd::writeLayout(r.layout, a.out); !s) return finish(s, j, a.jsonPath);
-  j["layout"] = {{"edges", r.layout.edges.size()},       {"patches", r.layout.patches.size()},
-                 {"multi_linkages", r.layout.multipleLinkages()}, {"cut_paths", r.cutPaths},
-                 {"triangulation_paths", r.triangulationPaths},   {"removed_paths", r.removedPaths},
-                 {"rejected_paths", r.rejectedPaths}};
-  j["timing_s"]["total"] = elapsed(t0);
-  std::printf("source  %s: %d vertices, %d faces, genus %d, %zu anchors\n", a.mesh.c_str(), rep.vertices, rep.faces,
-              rep.genus, anchors.size());
-  std::printf("layout  %zu edges (%d across Voronoi cuts, %d triangulating), %zu patches, %d multiple linkages\n",
-              r.layout.edges.size(), r.cutPaths - r.removedPaths, r.triangulationPaths, r.layout.patches.size(),
-              r.layout.multipleLinkages());
-  std::printf("time    voronoi %.3f s, layout %.3f s\n", r.voronoiSeconds, r.layoutSeconds);
-  std::printf("wrote   %s/{layout,paths,clusters}.ply\n", a.out.c_str());
-  return finish(cbd::Status::success(), j, a.jsonPath);
+/// When the report file cannot be written, the report of that error goes nowhere.
+std::string reportPathFor(const cbd::Status& s, const std::string& jsonPath) {
+  return s.code == cbd::ErrorCode::OutputError && s.message.rfind("cannot write JSON report", 0) == 0 ? "" : jsonPath;
 }
 
 int runLayout(const RunArgs& a) {
-  if (a.target.empty()) {
-    if (a.method == "greedy") {
-      json j;
-      return finish(cbd::Status::error(cbd::ErrorCode::InvalidArgument,
-                                       "--method greedy builds both layouts at once: give --target and --target-anchors"),
-                    j, a.jsonPath);
-    }
-    return runSingleLayout(a);
+  const cbd::LayoutJob job = a.layoutJob();
+  cbd::LayoutJobResult r;
+  {
+    TerminalProgress bar;
+    cbd::runLayoutJob(job, r, bar.progress());
   }
-  json j;
-  j["method"] = a.method;
-  const auto t0 = std::chrono::steady_clock::now();
-  cbd::LoadedInput in;
-  std::vector<int> sa, ta;
-  if (cbd::Status s = loadPair(a, in, sa, ta, j); !s) return finish(s, j, a.jsonPath);
-  if (const std::optional<int> rc = prepareOutputs(a, j)) return *rc;
-  cbd::LayoutPair p = cbd::buildLayouts(in.source, sa, in.target, ta, in.report.source.eulerCharacteristic,
-                                         pipelineOptions(a, in.report.anchors.names));
-  p.times.total = elapsed(t0);
-  j["timing_s"] = timesJson(p.times);
-  if (!p.status) return finish(p.status, j, a.jsonPath);
-  j["layout"] = layoutJson(p);
-  if (cbd::Status s = cbd::writeLayout(p.source, a.out + "/" + cbd::kSourceLayoutFolder); !s) return finish(s, j, a.jsonPath);
-  if (cbd::Status s = cbd::writeLayout(p.target, a.out + "/" + cbd::kTargetLayoutFolder); !s) return finish(s, j, a.jsonPath);
-  printLayout(p);
-  std::printf("time    voronoi %.3f s, source layout %.3f s, target layout %.3f s\n", p.times.voronoi,
-              p.times.sourceLayout, p.times.targetLayout);
-  std::printf("wrote   %s/{source,target}/{layout,paths%s}.ply\n", a.out.c_str(),
-              p.method == cbd::LayoutMethod::Voronoi ? ",clusters" : "");
-  return finish(cbd::Status::success(), j, a.jsonPath);
+  warn(job.paired() ? cbd::inputWarnings(r.input.report) : r.single.report.warnings);
+  if (r.status) {
+    if (job.paired()) warn(cbd::layoutWarnings(r.layouts));
+    print(cbd::layoutJobLines(job, r));
+  }
+  return finish(r.status, cbd::layoutJobJson(job, r), reportPathFor(r.status, a.jsonPath));
 }
 
 int runMap(const RunArgs& a) {
-  json j;
-  j["method"] = a.method;
-  const auto t0 = std::chrono::steady_clock::now();
-  cbd::LoadedInput in;
-  std::vector<int> sa, ta;
-  if (cbd::Status s = loadPair(a, in, sa, ta, j); !s) return finish(s, j, a.jsonPath);
-  if (const std::optional<int> rc = prepareOutputs(a, j)) return *rc;
-  cbd::CrossParameterizationResult r =
-      cbd::crossParameterize(in.source, sa, in.target, ta, in.report.source.eulerCharacteristic,
-                             pipelineOptions(a, in.report.anchors.names));
-  r.times.total = elapsed(t0);
-  j["timing_s"] = timesJson(r.times);
-  if (!r.status) return finish(r.status, j, a.jsonPath);
-  j["layout"] = layoutJson(r.layouts);
-  if (a.straighten > 0) {
-    auto side = [](const cbd::PathStraighteningResult& s) {
-      return json{{"straightened", s.straightened}, {"skipped", s.skipped}, {"splits", s.splits},
-                  {"length_before", s.lengthBefore}, {"length_after", s.lengthAfter}};
-    };
-    j["straighten"] = {{"rounds", a.straighten}, {"source", side(r.straightenSource)},
-                       {"target", side(r.straightenTarget)}, {"failed", r.straightenFailed}};
-    for (const auto* s : {&r.straightenSource, &r.straightenTarget})
-      if (!s->status) j["straighten"]["error"] = s->status.message;
-  }
-  const auto& m = r.metrics;
-  if (a.smooth > 0)
-    j["smoothing"] = {{"iterations", a.smooth}, {"moves", r.smoothing.moves}, {"rejected", r.smoothing.rejected},
-                      {"flipped_before", r.smoothing.flippedBefore}, {"flipped_after", r.smoothing.flippedAfter}};
-  const bool optimized = !a.noUntangle && a.mapStage == "optimize";
-  if (optimized) {
-    const auto& o = r.optimization;
-    j["optimize"] = {{"iterations", o.iterations},      {"converged", o.converged},  {"energy_before", o.energyBefore},
-                     {"energy_after", o.energyAfter}, {"injective", o.injective}};
-  } else if (!a.noUntangle) {
-    const auto &u = r.untangleSource, &w = r.untangleTarget;
-    j["untangle"] = {{"flipped_before", u.flippedBefore},         {"flipped_after", u.flippedAfter},
-                     {"moved_vertices", u.movedVertices},         {"inverse_flipped_before", w.flippedBefore},
-                     {"inverse_flipped_after", w.flippedAfter},   {"inverse_moved_vertices", w.movedVertices},
-                     {"attempts", u.attempts},                    {"inverse_attempts", w.attempts}};
-  }
-  j["metrics"] = {{"e_ang", m.eAng},     {"e_ang_deg", m.eAngDegrees}, {"e_l2", m.eL2},
-                  {"e_l2_inverse", m.eL2Inverse}, {"flipped", m.flipped}, {"degenerate", m.degenerate}};
+  const cbd::MapJob job = a.mapJob();
+  cbd::MapJobResult r;
   {
-    const auto& c = r.composedMetrics;
-    j["metrics"]["composed"] = {{"e_ang", c.eAng},         {"e_ang_deg", c.eAngDegrees}, {"e_l2", c.eL2},
-                                {"e_l2_inverse", c.eL2Inverse}, {"flipped", c.flipped},      {"degenerate", c.degenerate}};
+    TerminalProgress bar;
+    cbd::runMapJob(job, r, bar.progress());
   }
-  // M_st with the target's attributes, M_ts with the source's.
-  const cbd::DistortionMetrics inverse =
-      cbd::computeDistortion(in.target, r.map.targetImage, in.source, r.map.targetToSource);
-  cbd::TransferOptions toSource{in.targetLoad.hasVertexColor, in.targetLoad.hasVertexQuality, in.targetLoad.hasVertexTexCoord};
-  cbd::TransferOptions toTarget{in.sourceLoad.hasVertexColor, in.sourceLoad.hasVertexQuality, in.sourceLoad.hasVertexTexCoord};
-  cbd::Mesh mst, mts;
-  cbd::buildMappedMesh(in.sourceMesh, r.map.sourceImage, r.map.sourceToTarget, in.targetMesh, toSource,
-                       m.faceStretch, mst);
-  cbd::buildMappedMesh(in.targetMesh, r.map.targetImage, r.map.targetToSource, in.sourceMesh, toTarget,
-                       inverse.faceStretch, mts);
-  cbd::SavePlyOptions po;
-  po.faceColor = po.faceQuality = true;
-  po.vertexColor = toSource.vertexColor;
-  po.vertexQuality = toSource.vertexQuality;
-  po.vertexTexCoord = toSource.vertexTexCoord;
-  const std::string dir = a.out;
-  if (cbd::Status s = cbd::savePly(dir + "/" + cbd::kMstFile, mst, po); !s) return finish(s, j, a.jsonPath);
-  po.vertexColor = toTarget.vertexColor;
-  po.vertexQuality = toTarget.vertexQuality;
-  po.vertexTexCoord = toTarget.vertexTexCoord;
-  if (cbd::Status s = cbd::savePly(dir + "/" + cbd::kMtsFile, mts, po); !s) return finish(s, j, a.jsonPath);
-  if (cbd::Status s = cbd::writeCorrespondence(dir + "/" + cbd::kCorrespondenceFile, r.map.sourceToTarget, r.map.sourceImage); !s)
-    return finish(s, j, a.jsonPath);
-  if (cbd::Status s = cbd::writeLayout(r.layouts.source, dir + "/" + cbd::kSourceLayoutFolder); !s) return finish(s, j, a.jsonPath);
-  if (cbd::Status s = cbd::writeLayout(r.layouts.target, dir + "/" + cbd::kTargetLayoutFolder); !s) return finish(s, j, a.jsonPath);
-  int staleFrames = 0;
-  if (a.morph > 0)
-    if (cbd::Status s = cbd::writeMorph(dir, in.sourceMesh, r.map.sourceImage, sa, a.morph, &staleFrames); !s)
-      return finish(s, j, a.jsonPath);
-  printLayout(r.layouts);
-  if (a.straighten > 0) {
-    const auto &s = r.straightenSource, &t = r.straightenTarget;
-    if (r.straightenFailed)
-      std::printf("straighten failed (%s): both layouts kept as traced\n",
-                  (!s.status ? s.status : t.status).message.c_str());
-    else
-      std::printf("straighten %d round%s: %d / %d paths straightened (source / target), total length %.4g -> %.4g / "
-                  "%.4g -> %.4g\n",
-                  a.straighten, a.straighten == 1 ? "" : "s", s.straightened, t.straightened, s.lengthBefore,
-                  s.lengthAfter, t.lengthBefore, t.lengthAfter);
+  warn(cbd::inputWarnings(r.input.report));
+  if (r.status) {
+    warn(cbd::layoutWarnings(r.result.layouts));
+    print(cbd::mapJobLines(job, r));
   }
-  if (a.smooth > 0)
-    std::printf("smooth  %d sweep%s over M_st: %d moves kept, %d rejected (a flip or outside the chart), flipped %d -> %d\n",
-                a.smooth, a.smooth == 1 ? "" : "s", r.smoothing.moves, r.smoothing.rejected, r.smoothing.flippedBefore,
-                r.smoothing.flippedAfter);
-  std::printf("map     E_ang %.4f (%.2f deg), E_L2 %.4f (inverse %.4f), %d flipped, %d degenerate triangles\n", m.eAng,
-              m.eAngDegrees, m.eL2, m.eL2Inverse, m.flipped, m.degenerate);
-  if (!a.noUntangle)
-    std::printf("composed E_ang %.4f, E_L2 %.4f, %d flipped (the map before untangling)\n", r.composedMetrics.eAng,
-                r.composedMetrics.eL2, r.composedMetrics.flipped);
-  if (optimized)
-    std::printf("optimize %d iterations%s, injective in the base domain; M_ts (its inverse): %d flipped\n",
-                r.optimization.iterations, r.optimization.converged ? "" : " (not converged)", inverse.flipped);
-  else if (!a.noUntangle)
-    std::printf("untangle flipped triangles of M_st %d -> %d (%d vertices moved), of M_ts %d -> %d\n",
-                r.untangleSource.flippedBefore, r.untangleSource.flippedAfter, r.untangleSource.movedVertices,
-                r.untangleTarget.flippedBefore, r.untangleTarget.flippedAfter);
-  std::printf("time    voronoi %.3f s, source layout %.3f s, target layout %.3f s, straighten %.3f s, "
-              "parameterization %.3f s, untangle %.3f s, total %.3f s\n",
-              r.times.voronoi, r.times.sourceLayout, r.times.targetLayout, r.times.straighten, r.times.parameterization,
-              r.times.untangle, r.times.total);
-  std::printf("wrote   %s/mst.ply (source connectivity on the target; face quality = stretch), %s/mts.ply,\n"
-              "        %s/correspondence.txt, %s/{source,target}/ layouts%s\n",
-              dir.c_str(), dir.c_str(), dir.c_str(), dir.c_str(), a.morph > 0 ? ", morph_*.ply" : "");
-  if (staleFrames > 0)
-    std::printf("removed %d morph frame%s after %s of an earlier, longer sequence\n", staleFrames,
-                staleFrames == 1 ? "" : "s", cbd::morphFileName(a.morph - 1).c_str());
-  return finish(cbd::Status::success(), j, a.jsonPath);
+  return finish(r.status, cbd::mapJobJson(job, r), reportPathFor(r.status, a.jsonPath));
 }
 
 struct SampleArgs {
@@ -596,42 +262,13 @@ struct SampleArgs {
 };
 
 int runSample(const SampleArgs& a) {
-  json j;
-  cbd::Mesh mesh;
-  cbd::LoadResult lr = cbd::loadMesh(a.mesh, mesh);
-  if (!lr.status) return finish(lr.status, j, "");
-  const cbd::IndexedMesh im = cbd::toIndexed(mesh);
-  // Anchors are for meshes `map` accepts; a NaN coordinate would be written as a "nan" anchor.
-  cbd::MeshReport rep = cbd::validateMesh(im, "", lr.hadPolygons);
-  cbd::nameMeshFile(rep, a.mesh);
-  if (!rep.status) return finish(rep.status, j, "");
-  rep.warnings.insert(rep.warnings.end(), lr.warnings.begin(), lr.warnings.end());
-  for (const auto& w : rep.warnings) std::fprintf(stderr, "cbd: warning: %s\n", w.c_str());
-  if (a.seed < 0 || a.seed >= im.vertexCount())
-    return finish(cbd::Status::error(cbd::ErrorCode::InvalidArgument,
-                                     "--seed " + std::to_string(a.seed) + " is not a vertex of '" + a.mesh + "' (0.." +
-                                         std::to_string(im.vertexCount() - 1) + ")"),
-                  j, "");
-  // The sampling would start elsewhere, silently, from a vertex no face uses.
-  if (std::none_of(im.faces.begin(), im.faces.end(), [&](const auto& f) { return f[0] == a.seed || f[1] == a.seed || f[2] == a.seed; }))
-    return finish(cbd::Status::error(cbd::ErrorCode::InvalidArgument,
-                                     "--seed " + std::to_string(a.seed) + " is an unreferenced vertex of '" + a.mesh +
-                                         "' (no face uses it): choose a vertex of the surface"),
-                  j, "");
-  const std::vector<int> vs = cbd::farthestPointSampling(im, a.count, a.seed);
-  if (static_cast<int>(vs.size()) < a.count)
-    std::fprintf(stderr, "cbd: warning: '%s' has only %zu vertices on its surface: %zu anchors written, not %d\n",
-                 a.mesh.c_str(), vs.size(), vs.size(), a.count);
-  std::vector<cbd::Anchor> anchors;
-  for (size_t k = 0; k < vs.size(); ++k) {
-    cbd::Anchor an;
-    an.name = "a" + std::to_string(k + 1);
-    an.position = im.positions[vs[k]];
-    anchors.push_back(an);
-  }
-  const cbd::Status s = cbd::writePickedPoints(a.out, anchors, std::filesystem::path(a.mesh).filename().string());
-  if (s) std::printf("wrote %s to %s\n", cbd::counted(static_cast<long long>(anchors.size()), "anchor", "anchors").c_str(), a.out.c_str());
-  return finish(s, j, "");
+  cbd::SampleJobResult r;
+  cbd::runSampleJob({a.mesh, a.count, a.seed, a.out}, r);
+  warn(r.warnings);
+  if (r.status)
+    std::printf("wrote %s to %s\n", cbd::counted(static_cast<long long>(r.anchors.size()), "anchor", "anchors").c_str(),
+                a.out.c_str());
+  return finish(r.status, Json{}, "");
 }
 
 }  // namespace
@@ -644,12 +281,24 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   app.set_version_flag("--version", "cbd 0.1.0");
 
-  PairArgs check;
+  CheckArgs check;
   CLI::App* cmdCheck = app.add_subcommand(
       "check",
       "Validate a source/target mesh pair and their anchors; print vertices, faces, genus, anchors "
       "and snap distances. Exit 0 when the pair can be processed, else a distinct code per problem.");
-  addPairOptions(cmdCheck, check);
+  cmdCheck->add_option("--source,-s", check.files.sourceMesh, "source mesh (.ply, .off, .obj, .stl)")->required();
+  cmdCheck->add_option("--target,-t", check.files.targetMesh, "target mesh (.ply, .off, .obj, .stl)")->required();
+  cmdCheck->add_option("--source-anchors", check.files.sourceAnchors,
+                       "source anchors: MeshLab PickPoints .pp, 'index [x y z]' lines, or 'name x y z' lines")
+      ->required();
+  cmdCheck->add_option("--target-anchors", check.files.targetAnchors, "target anchors, same formats; matched by name")
+      ->required();
+  cmdCheck->add_option("--snap-tolerance", check.snapTolerance,
+                       "largest allowed anchor-to-vertex distance, as a fraction of the bounding-box diagonal")
+      ->capture_default_str()
+      ->check(finiteRange(0.0, cbd::kMaxSnapTolerance));
+  cmdCheck->add_option("--json", check.jsonPath,
+                       "also write a JSON report to this file ('-': to stdout, the log then goes to stderr)");
 
   auto addRunOptions = [](CLI::App* cmd, RunArgs& r, bool targetRequired) {
     cmd->add_option("--source,-s", r.mesh, "source mesh (.ply, .off, .obj, .stl)")->required();
@@ -671,12 +320,12 @@ int main(int argc, char** argv) {
         ->check(CLI::IsMember({"voronoi", "greedy"}));
     auto* b = cmd->add_option("--min-edge-nodes", r.minEdgeNodes, "b: minimum edge nodes per edge (adaptive: max(b, b*l/lbar))")
         ->capture_default_str()
-        ->check(CLI::Range(1, 16));
+        ->check(range(cbd::kMinEdgeNodesRange));
     cmd->add_flag("--single-edge-node", r.singleEdgeNode, "one edge node per edge, no adaptivity (the paper's E1 setting)")
         ->excludes(b);
     cmd->add_option("--snap-tolerance", r.snapTolerance, "largest anchor snap distance (fraction of bbox diagonal)")
         ->capture_default_str()
-        ->check(finiteRange(0.0, 1.0));
+        ->check(finiteRange(0.0, cbd::kMaxSnapTolerance));
     cmd->add_flag("--flip-paths", r.flipPaths,
                   "Voronoi method with a target: after both layouts are built, replace each path by the other diagonal of its two "
                   "patches when that is shorter on both surfaces together and both layouts stay consistent (the "
@@ -704,14 +353,14 @@ int main(int argc, char** argv) {
                      "N sweeps relaxing M_st across patch boundaries; moves that would flip a triangle are rejected "
                      "(mts.ply, the inverse map, is not smoothed)")
       ->capture_default_str()
-      ->check(CLI::Range(0, 1000));
+      ->check(range(cbd::kSmoothingIterationsRange));
   cmdMap->add_option("--straighten", map.straighten,
                      "N rounds straightening every path of both layouts inside its two patches (the diagonal of "
                      "their quadrilateral mapped onto a square; the same for either method), before the patches "
                      "are parameterized; 0: the paths as traced; at most 8: every round splits mesh edges along "
                      "the paths, the time grows steeply with the rounds, and the paths settle within a few)")
       ->capture_default_str()
-      ->check(CLI::Range(0, 8));
+      ->check(range(cbd::kStraightenRoundsRange));
   cmdMap->add_option("--map-stage", map.mapStage,
                      "untangle: remove flipped triangles of M_st and M_ts, then polish (the default); optimize "
                      "(experimental): M_st optimized in the base domain by Newton's method, injective there, "
@@ -723,7 +372,7 @@ int main(int argc, char** argv) {
                    "triangles over the target (the default removes most flips, then polishes the map; see README)");
   cmdMap->add_option("--morph", map.morph, "also write K meshes OUT/morph_000.ply ... blending the source (fitted onto the target by its anchors) into M_st; "
                      "later frames of an earlier, longer sequence in OUT are removed")
-      ->check(CLI::Range(2, 1000));
+      ->check(range(cbd::kMorphFramesRange));
 
   SampleArgs sample;
   CLI::App* cmdSample = app.add_subcommand(
@@ -802,23 +451,9 @@ int main(int argc, char** argv) {
       const RunArgs& r = *cmdLayout ? layout : map;
       inputs = {r.mesh, r.anchors, r.target, r.targetAnchors};
       outputs = {r.jsonPath};
-      // Every file cbd writes under the output folder (the names the writers use): the layouts
-      // (in it for a single surface, else in source/ and target/), and for `map` M_st, M_ts,
-      // the correspondence and the morph frames.
-      const fs::path out(r.out);
-      const std::vector<fs::path> dirs = *cmdLayout && r.target.empty()
-                                             ? std::vector<fs::path>{out}
-                                             : std::vector<fs::path>{out / cbd::kSourceLayoutFolder,
-                                                                     out / cbd::kTargetLayoutFolder};
-      for (const fs::path& d : dirs)
-        for (const char* name : {cbd::kLayoutFile, cbd::kPathsFile, cbd::kClustersFile}) outputs.push_back((d / name).string());
-      if (*cmdMap) {
-        for (const char* name : {cbd::kMstFile, cbd::kMtsFile, cbd::kCorrespondenceFile}) outputs.push_back((out / name).string());
-        for (int k = 0; k < map.morph; ++k) outputs.push_back((out / cbd::morphFileName(k)).string());
-        // And the later frames of an earlier sequence, which writeMorph removes.
-        if (map.morph > 0)
-          for (const std::string& stale : cbd::staleMorphFrames(out.string(), map.morph)) outputs.push_back(stale);
-      }
+      // Every file the job writes under the output folder (the job names them).
+      const std::vector<std::string> files = *cmdLayout ? cbd::outputFiles(r.layoutJob()) : cbd::outputFiles(r.mapJob());
+      outputs.insert(outputs.end(), files.begin(), files.end());
     } else if (*cmdSample) {
       inputs = {sample.mesh};
       outputs = {sample.out};
@@ -840,10 +475,7 @@ int main(int argc, char** argv) {
     for (const std::string& in : inputs) {
       if (in.empty()) continue;
       bool clash = false;
-      for (const std::string& o : outputs) {
-        std::error_code ec;
-        if (!o.empty() && o != "-" && fs::exists(o, ec) && fs::equivalent(in, o, ec)) clash = true;
-      }
+      for (const std::string& o : outputs) clash = clash || cbd::sameFile(in, o);
       if (clash) {
         std::cerr << "cbd: error: invalid_argument: an output would overwrite the input '" << in
                   << "': choose another output path\n";

@@ -259,14 +259,14 @@ TEST(ValidateInput, OneAnchorIsCountedInTheSingular) {
   EXPECT_EQ(r.status.message.rfind("1 corresponding anchor given; at least 3", 0), 0u) << r.status.message;
 }
 
-TEST(ValidateInput, NonFiniteSnapToleranceIsRefused) {
+TEST(ValidateInput, SnapToleranceOutsideZeroToOneIsRefused) {
   const IndexedMesh s = fx::icosphere(2);
   ValidationOptions o;
-  for (const double bad : {std::nan(""), std::numeric_limits<double>::infinity()}) {
+  for (const double bad : {std::nan(""), std::numeric_limits<double>::infinity(), -0.01, 1.5}) {
     o.snapTolerance = bad;
     const InputReport r = validateInput(s, s, namedAt(s, {0, 1, 2}, "s"), namedAt(s, {0, 1, 2}, "t"), o);
     EXPECT_EQ(r.status.code, ErrorCode::InvalidArgument);
-    EXPECT_NE(r.status.message.find("snap tolerance must be a finite number"), std::string::npos) << r.status.message;
+    EXPECT_NE(r.status.message.find("snap tolerance must be a number in [0, 1]"), std::string::npos) << r.status.message;
   }
   o.snapTolerance = 0.01;
   o.degenerateAreaRelative = -1;

@@ -1,4 +1,5 @@
 #include "cbd/anchors.h"
+#include "cbd/files.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,5 @@
 #include "cbd/map_io.h"
+#include "cbd/files.h"
 
 #include <algorithm>
 #include <cmath>

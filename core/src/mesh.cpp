@@ -1,4 +1,5 @@
 #include "cbd/mesh.h"
+#include "cbd/files.h"
 
 #include <algorithm>
 #include <cctype>

@@ -90,24 +90,4 @@ int exitCode(ErrorCode code) {
   return 10 + static_cast<int>(code);
 }
 
-std::string writeTarget(const std::string& path) {
-  namespace fs = std::filesystem;
-  std::error_code ec;
-  const fs::file_status st = fs::status(path, ec);
-  if (!ec && fs::exists(st) && !fs::is_regular_file(st) && !fs::is_directory(st)) return path;
-  const fs::path target(path);
-  return (target.parent_path() / ("." + target.filename().string() + ".tmp")).string();
-}
-
-std::string notAFileReason(const std::string& path) {
-  namespace fs = std::filesystem;
-  std::error_code ec;
-  const fs::file_status st = fs::status(path, ec);
-  if (st.type() == fs::file_type::not_found) return "no such file (check the path)";
-  if (ec || st.type() == fs::file_type::none)
-    return "cannot be accessed (check the permissions of the folders on its path)";
-  if (fs::is_directory(st)) return "is a folder, not a file (name a file in it)";
-  return "is not a regular file (a device or pipe: give a file)";
-}
-
 }  // namespace cbd

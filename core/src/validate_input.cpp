@@ -300,9 +300,10 @@ InputReport validateInput(const IndexedMesh& source, const IndexedMesh& target,
                           const AnchorSet& sourceAnchors, const AnchorSet& targetAnchors,
                           const ValidationOptions& options, bool sourceHadPolygons, bool targetHadPolygons) {
   InputReport r;
-  if (!(options.snapTolerance >= 0) || !std::isfinite(options.snapTolerance)) {
-    r.status = Status::error(ErrorCode::InvalidArgument, "the anchor snap tolerance must be a finite number >= 0 (got " +
-                                                             std::to_string(options.snapTolerance) + ")");
+  if (!(options.snapTolerance >= 0) || !(options.snapTolerance <= kMaxSnapTolerance)) {
+    r.status = Status::error(ErrorCode::InvalidArgument,
+                             "the anchor snap tolerance must be a number in [0, 1] (a fraction of the bounding-box "
+                             "diagonal), got " + std::to_string(options.snapTolerance));
     return r;
   }
   if (!(options.degenerateAreaRelative >= 0) || !std::isfinite(options.degenerateAreaRelative)) {
@@ -380,6 +381,38 @@ void nameMeshFile(MeshReport& report, const std::string& path) {
   };
   rename(report.status.message);
   for (std::string& w : report.warnings) rename(w);
+}
+
+void loadSurface(const std::string& meshPath, const std::string& anchorsPath, const std::string& role,
+                 const ValidationOptions& options, LoadedSurface& out, int minAnchors) {
+  out.status = Status::success();
+  out.report = MeshReport{};
+  out.indexed = IndexedMesh{};
+  out.anchors.clear();
+  out.load = loadMesh(meshPath, out.mesh);  // clears the mesh first
+  if (!out.load.status) return void(out.status = out.load.status);
+  out.indexed = toIndexed(out.mesh);
+  out.report = validateMesh(out.indexed, role, out.load.hadPolygons, options);
+  nameMeshFile(out.report, meshPath);
+  out.report.warnings.insert(out.report.warnings.end(), out.load.warnings.begin(), out.load.warnings.end());
+  if (!out.report.status) return void(out.status = out.report.status);
+  if (anchorsPath.empty()) return;
+  if (!(options.snapTolerance >= 0) || !(options.snapTolerance <= kMaxSnapTolerance))
+    return void(out.status = Status::error(ErrorCode::InvalidArgument,
+                                           "the anchor snap tolerance must be a number in [0, 1] (a fraction of the "
+                                           "bounding-box diagonal), got " + std::to_string(options.snapTolerance)));
+  const AnchorSet set = readAnchors(anchorsPath);
+  if (!set.status) return void(out.status = set.status);
+  if (Status s = snapAnchors(out.indexed, set, options.snapTolerance, role, out.anchors); !s)
+    return void(out.status = s);
+  if (static_cast<int>(out.anchors.size()) < minAnchors)
+    out.status = Status::error(
+        ErrorCode::TooFewAnchors,
+        anchorsPath + ": " + std::to_string(out.anchors.size()) + " anchors" +
+            (set.skippedInactive > 0
+                 ? " (and " + std::to_string(set.skippedInactive) + " inactive points, active=\"0\", left out)"
+                 : std::string()) +
+            "; a layout needs at least " + std::to_string(minAnchors));
 }
 
 void loadAndValidate(const InputFiles& files, const ValidationOptions& options, LoadedInput& out) {

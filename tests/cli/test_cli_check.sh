@@ -153,7 +153,7 @@ sed 's/^6 8 0$/7 8 0/; s/^0 0 -1$/0 0 -1\n3 3 3/' octa.off > unref.off
 "$CBD" sample-anchors -m unref.off -n 1 -o one.pp >one.out 2>&1; rc=$?
 [ "$rc" = 0 ] && grep -q "wrote 1 anchor to one.pp" one.out && ok "sample-anchors -n 1: $(cat one.out)" || bad "sample-anchors -n 1: exit $rc, $(cat one.out)"
 rm -f unref_seed.pp; "$CBD" sample-anchors -m unref.off -n 3 --seed 6 -o unref_seed.pp >/dev/null 2>unref_seed.err; rc=$?
-[ "$rc" = 2 ] && [ ! -e unref_seed.pp ] && grep -q -- "--seed 6 is an unreferenced vertex of 'unref.off'" unref_seed.err &&
+[ "$rc" = 2 ] && [ ! -e unref_seed.pp ] && grep -q -- "seed vertex 6 is an unreferenced vertex of 'unref.off'" unref_seed.err &&
   ok "sample-anchors --seed on an unreferenced vertex: exit 2, $(cat unref_seed.err)" ||
   bad "sample-anchors --seed on an unreferenced vertex: exit $rc, $(cat unref_seed.err)"
 printf 'xp 1 0 0\n' > octa1.txt
@@ -406,6 +406,23 @@ PY
     cmp -s "map_voronoi/$f" "map_again/$f" || same=0
   done
   [ "$same" = 1 ] && ok "cbd map twice: byte-identical outputs" || bad "cbd map twice: outputs differ"
+  # Ctrl-C half way (once the output folder exists, i.e. the input was valid and the
+  # computation began): the status cancelled with its exit code, no output file, no folder.
+  rm -rf interrupted interrupted.json
+  "$CBD" map --source "$MESHES/bull.off" --source-anchors "$EXAMPLES/bull_picked_points.pp" \
+    --target "$MESHES/cow.off" --target-anchors "$EXAMPLES/cow_picked_points.pp" --out interrupted/deep \
+    --json interrupted.json >/dev/null 2>interrupted.err &
+  pid=$!
+  for _ in $(seq 1 600); do [ -d interrupted/deep ] && break; sleep 0.05; done
+  sleep 1  # into the untangling, the longest stage
+  kill -INT "$pid"; wait "$pid"; rc=$?
+  st=$(python3 -c "import json;print(json.load(open('interrupted.json'))['status'])" 2>/dev/null)
+  if [ "$rc" = "$(code_of cancelled)" ] && [ "$st" = cancelled ] && [ ! -e interrupted ] &&
+     grep -q "nothing was written" interrupted.err; then
+    ok "cbd map interrupted half way: exit $rc, no output, $(tail -1 interrupted.err)"
+  else
+    bad "cbd map interrupted half way: exit $rc, status '$st', $(ls -R interrupted 2>&1 | head -3), $(tail -1 interrupted.err)"
+  fi
   # A shorter morph into the same folder leaves one sequence: the earlier run's last frame goes.
   "$CBD" map --source "$MESHES/bull.off" --source-anchors "$EXAMPLES/bull_picked_points.pp" \
     --target "$MESHES/cow.off" --target-anchors "$EXAMPLES/cow_picked_points.pp" --out map_again --morph 2 \

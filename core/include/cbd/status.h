@@ -66,17 +66,6 @@ const char* errorCodeDescription(ErrorCode code);
 /// All codes in enum order (for listings and tests).
 const ErrorCode* allErrorCodes(int& count);
 
-/// Why `path` cannot be read as an input file, with the fix, for FileNotFound messages: "no
-/// such file (check the path)", "cannot be accessed (...permissions...)", "is a folder, not a
-/// file (name a file in it)" or "is not a regular file (a device or pipe: give a file)".
-std::string notAFileReason(const std::string& path);
-
-/// Where a writer puts `path`'s contents so that no reader sees a half-written file: a temporary
-/// `.NAME.tmp` beside it, then renamed over it. But a device or pipe that exists at `path`
-/// (/dev/null, /dev/stdout) is returned itself, to be written in place: a rename would replace
-/// the device with a file (it did, for root, with `--json /dev/null`).
-std::string writeTarget(const std::string& path);
-
 /// A count with its noun in the singular for one, for messages: counted(1, "vertex", "vertices")
 /// is "1 vertex", counted(3, ...) "3 vertices".
 std::string counted(long long n, const char* one, const char* many);

@@ -13,6 +13,9 @@
 
 namespace cbd {
 
+/// The largest snap tolerance accepted (the whole bounding-box diagonal).
+inline constexpr double kMaxSnapTolerance = 1.0;
+
 /// Options of `validateMesh` / `validateInput`.
 struct ValidationOptions {
   double degenerateAreaRelative = 1e-14;  ///< a face is degenerate when its area is below this
@@ -88,5 +91,21 @@ struct LoadedInput {
 /// Load both meshes and both anchor files, then `validateInput`. Any file error is returned
 /// in `report.status` with the path in the message.
 void loadAndValidate(const InputFiles& files, const ValidationOptions& options, LoadedInput& out);
+
+/// One surface (and its anchors) loaded and checked, for commands on a single mesh.
+struct LoadedSurface {
+  Status status;                       ///< the first problem: file, mesh, anchors
+  MeshReport report;                   ///< valid once the mesh loaded
+  Mesh mesh;                           ///< as loaded
+  IndexedMesh indexed;                 ///< the flat copy the algorithm reads
+  LoadResult load;
+  std::vector<SnappedAnchor> anchors;  ///< snapped, in file order (empty without an anchor file)
+};
+
+/// Load `meshPath` and `validateMesh` it (messages name it "<role> mesh '<path>'"); then, when
+/// `anchorsPath` is not empty, read its anchors and snap them (`snapAnchors`), at least
+/// `minAnchors` of them (TooFewAnchors, counting the inactive ones left out).
+void loadSurface(const std::string& meshPath, const std::string& anchorsPath, const std::string& role,
+                 const ValidationOptions& options, LoadedSurface& out, int minAnchors = 3);
 
 }  // namespace cbd
