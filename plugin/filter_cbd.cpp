@@ -1,28 +1,22 @@
 /// @file filter_cbd.cpp
-/// The MeshLab adapter of cbd: layer -> cbd::IndexedMesh, anchors -> cbd::AnchorSet,
-/// cbd::validateInput, report, then runPipeline. No geometry here.
+/// Parameters in, one core call, layers out. No geometry here (layers.h converts, cbd's core
+/// computes and reports).
 
 #include "filter_cbd.h"
 
 #include <algorithm>
-#include <array>
-#include <cstdio>
+#include <cmath>
 #include <exception>
 #include <new>
-#include <sstream>
 #include <tuple>
 #include <utility>
 #include <vector>
 
-#include <QFile>
-#include <QFileInfo>
-
-#include "cbd/anchors.h"
-#include "cbd/mesh.h"
-#include "cbd/status.h"
+#include "cbd/pipeline.h"
+#include "cbd/progress.h"
+#include "cbd/report.h"
 #include "cbd/validate_input.h"
-#include "cbd_pipeline.h"
-#include "pickedPoints.h"
+#include "layers.h"
 
 namespace {
 
@@ -41,192 +35,61 @@ const char* const kAddMstLayer = "AddMstLayer";
 const char* const kColourByPatch = "ColourByPatch";
 const char* const kAddPathLayers = "AddPathLayers";
 
-/// An input problem found by the adapter; applyFilter turns it into the error message.
-struct AdapterError {
+/// A problem found before the core runs; `run` turns it into the error text.
+struct InputError {
   cbd::Status status;
 };
 
-[[noreturn]] void throwError(cbd::ErrorCode code, const std::string& message) {
-  throw AdapterError{cbd::Status::error(code, message)};
+[[noreturn]] void refuse(cbd::ErrorCode code, const std::string& message) {
+  throw InputError{cbd::Status::error(code, message)};
 }
 
 std::string str(const QString& s) { return s.toStdString(); }
-std::string filePath(const QString& s) { return QFile::encodeName(s).toStdString(); }
 std::string quoted(const QString& s) { return "'" + str(s) + "'"; }
+std::string layerName(const MeshModel& m) { return "layer " + quoted(cbdplugin::panelName(m)); }
 
-std::string fmt(double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.3g", v);
-  return buf;
-}
+/// Help texts are rich text: anything that reads like a tag ("<source>") must be escaped, or Qt
+/// drops it.
+QString help(const char* text) { return QString(text).toHtmlEscaped(); }
 
-// --- parameters, read without MeshLab's asserting getters (a hand-written .mlx may give a
-// --- parameter the wrong type, which would abort MeshLab inside RichParameterList::getX).
+// --- parameters, read without MeshLab's asserting getters
 
-const Value& paramValue(const RichParameterList& par, const char* name) {
-  if (!par.hasParameter(name)) throwError(cbd::ErrorCode::InvalidArgument, std::string("parameter '") + name + "' is missing");
-  return par.getParameterByName(name).value();
-}
-
-MeshModel* meshParam(const RichParameterList& par, const char* name) {
-  const Value& v = paramValue(par, name);
-  MeshModel* m = v.isMesh() ? v.getMesh() : nullptr;
-  if (m == nullptr)
-    throwError(cbd::ErrorCode::InvalidArgument, std::string("parameter '") + name + "' does not name a mesh layer");
+MeshModel* layerParameter(const RichParameterList& par, const char* name, MeshDocument& md) {
+  MeshModel* m = cbdplugin::layerParameter(par, name, md);
+  if (m == nullptr) refuse(cbd::ErrorCode::InvalidArgument, std::string("parameter '") + name + "' does not name a mesh layer");
   return m;
 }
 
-QString pathParam(const RichParameterList& par, const char* name) {
-  const Value& v = paramValue(par, name);
-  if (v.isFileName()) return v.getFileName().trimmed();
-  if (v.isString()) return v.getString().trimmed();
-  throwError(cbd::ErrorCode::InvalidArgument, std::string("parameter '") + name + "' must be a file name (RichOpenFile or RichString)");
+QString fileParameter(const RichParameterList& par, const char* name) {
+  QString s;
+  if (!cbdplugin::fileParameterValue(par, name, s))
+    refuse(cbd::ErrorCode::InvalidArgument, std::string("parameter '") + name + "' is missing or not a file name");
+  return s.trimmed();
 }
 
-int intParam(const RichParameterList& par, const char* name) {
-  const Value& v = paramValue(par, name);
-  if (v.isInt() || v.isEnum()) return v.getInt();
-  throwError(cbd::ErrorCode::InvalidArgument, std::string("parameter '") + name + "' must be an integer");
+int intParameter(const RichParameterList& par, const char* name) {
+  int v = 0;
+  if (!cbdplugin::intParameterValue(par, name, v))
+    refuse(cbd::ErrorCode::InvalidArgument, std::string("parameter '") + name + "' is missing or not an integer");
+  return v;
 }
 
-bool boolParam(const RichParameterList& par, const char* name) {
-  const Value& v = paramValue(par, name);
-  if (v.isBool()) return v.getBool();
-  throwError(cbd::ErrorCode::InvalidArgument, std::string("parameter '") + name + "' must be true or false");
-}
-
-// --- layers
-
-std::string layerName(const MeshModel& m) { return "layer " + quoted(m.label()); }
-
-/// Compact double-precision copy of a layer: deleted vertices and faces skipped, vertex indices
-/// renumbered in order; `where` tells where each compact element is in the layer. The layer is
-/// only read.
-cbd::IndexedMesh toIndexed(const MeshModel& layer, int& deletedVertices, cbdplugin::LayerIndex& where) {
-  const CMeshO& cm = layer.cm;
-  cbd::IndexedMesh out;
-  std::vector<int> index(cm.vert.size(), -1);
-  out.positions.reserve(static_cast<size_t>(std::max(cm.vn, 0)));
-  deletedVertices = 0;
-  for (size_t i = 0; i < cm.vert.size(); ++i) {
-    const CVertexO& v = cm.vert[i];
-    if (v.IsD()) {
-      ++deletedVertices;
-      continue;
-    }
-    index[i] = static_cast<int>(out.positions.size());
-    where.vertex.push_back(static_cast<int>(i));
-    out.positions.emplace_back(double(v.cP()[0]), double(v.cP()[1]), double(v.cP()[2]));
-  }
-  out.faces.reserve(static_cast<size_t>(std::max(cm.fn, 0)));
-  const CVertexO* base = cm.vert.empty() ? nullptr : &cm.vert[0];
-  for (size_t f = 0; f < cm.face.size(); ++f) {
-    const CFaceO& face = cm.face[f];
-    if (face.IsD()) continue;
-    std::array<int, 3> t{};
-    for (int k = 0; k < 3; ++k) {
-      const CVertexO* vp = face.cV(k);
-      const std::ptrdiff_t i = (vp && base) ? vp - base : -1;
-      if (i < 0 || i >= static_cast<std::ptrdiff_t>(index.size()) || index[static_cast<size_t>(i)] < 0)
-        throwError(cbd::ErrorCode::MalformedMesh,
-              layerName(layer) + ": face " + std::to_string(f) + " refers to a deleted or foreign vertex "
-              "(save and reload the layer, or run Filters > Cleaning and Repairing > Remove Unreferenced Vertices)");
-      t[static_cast<size_t>(k)] = index[static_cast<size_t>(i)];
-    }
-    out.faces.push_back(t);
-    where.face.push_back(static_cast<int>(f));
-  }
-  return out;
-}
-
-// --- anchors
-
-/// Where a layer's anchors came from, for the report.
-struct GatheredAnchors {
-  cbd::AnchorSet set;
-  std::string origin;
-};
-
-/// The layer's PickPoints attribute ("PickedPoints", a PickedPoints*), or null. Never creates it.
-PickedPoints* pickedPointsOf(MeshModel& layer) {
-  auto h = vcg::tri::Allocator<CMeshO>::FindPerMeshAttribute<PickedPoints*>(layer.cm, PickedPoints::Key);
-  if (!vcg::tri::Allocator<CMeshO>::IsValidHandle<PickedPoints*>(layer.cm, h)) return nullptr;
-  return h();
-}
-
-/// Anchors of one layer: the explicit file when given; else the layer's PickPoints points;
-/// else `<mesh basename>_picked_points.pp` next to the layer's file (PickPoints' own naming).
-GatheredAnchors gatherAnchors(MeshModel& layer, const QString& explicitPath, const std::string& role) {
-  GatheredAnchors g;
-  if (!explicitPath.isEmpty()) {
-    g.set = cbd::readAnchors(filePath(explicitPath));
-    g.origin = "file " + quoted(explicitPath);
-    return g;
-  }
-  if (PickedPoints* pp = pickedPointsOf(layer)) {
-    g.set.source = "PickPoints of " + layerName(layer);
-    g.set.format = cbd::AnchorFormat::PickedPoints;
-    int line = 0;
-    for (const PickedPoint* p : pp->getPickedPointVector()) {
-      ++line;
-      if (p == nullptr) continue;
-      if (!p->present) {
-        ++g.set.skippedInactive;
-        continue;
-      }
-      cbd::Anchor a;
-      a.name = str(p->name);
-      if (a.name.empty()) a.name = std::to_string(line);  // as cbd::parseAnchors names unnamed points
-      a.position = cbd::Vec3(double(p->point[0]), double(p->point[1]), double(p->point[2]));
-      a.hasPosition = true;
-      a.line = line;
-      g.set.anchors.push_back(a);
-    }
-    g.origin = "PickPoints of " + layerName(layer);
-    return g;
-  }
-  if (layer.fullName().isEmpty()) {
-    g.set.source = layerName(layer);
-    g.set.status = cbd::Status::error(
-        cbd::ErrorCode::FileNotFound,
-        "no " + role + " anchors: " + layerName(layer) + " has no picked points and no file name; pick points "
-        "(Edit > PickPoints) or set the '" + role + " anchors file' parameter");
-    return g;
-  }
-  const QString suggested = QFileInfo(layer.fullName()).absolutePath() + "/" +
-                            PickedPoints::getSuggestedPickedPointsFileName(layer);
-  if (!QFileInfo(suggested).isFile()) {
-    g.set.source = filePath(suggested);
-    g.set.status = cbd::Status::error(
-        cbd::ErrorCode::FileNotFound,
-        "no " + role + " anchors: " + layerName(layer) + " has no picked points and " + quoted(suggested) +
-            " does not exist; pick points (Edit > PickPoints) or set the '" + role + " anchors file' parameter");
-    return g;
-  }
-  g.set = cbd::readAnchors(filePath(suggested));
-  g.origin = "file " + quoted(suggested);
-  return g;
+bool boolParameter(const RichParameterList& par, const char* name) {
+  bool v = false;
+  if (!cbdplugin::boolParameterValue(par, name, v))
+    refuse(cbd::ErrorCode::InvalidArgument, std::string("parameter '") + name + "' is missing or not true/false");
+  return v;
 }
 
 /// validateInput names the meshes "source"/"target"; say which layer that is.
 std::string withLayerNames(std::string message, const MeshModel& source, const MeshModel& target) {
   for (const auto& [role, layer] : {std::pair<std::string, const MeshModel*>{"source mesh", &source},
                                     std::pair<std::string, const MeshModel*>{"target mesh", &target}}) {
-    const std::string prefix = role, the = "the " + role;
-    if (message.rfind(prefix, 0) == 0)
-      return role + " (" + layerName(*layer) + ")" + message.substr(prefix.size());
-    if (message.rfind(the, 0) == 0)
-      return the + " (" + layerName(*layer) + ")" + message.substr(the.size());
+    const std::string the = "the " + role;
+    if (message.rfind(role, 0) == 0) return role + " (" + layerName(*layer) + ")" + message.substr(role.size());
+    if (message.rfind(the, 0) == 0) return the + " (" + layerName(*layer) + ")" + message.substr(the.size());
   }
   return message;
-}
-
-std::string meshSummary(const cbd::MeshReport& r) {
-  std::ostringstream s;
-  s << r.vertices << " vertices, " << r.faces << " faces, genus " << r.genus;
-  if (r.unreferencedVertices > 0)
-    s << ", " << cbd::counted(r.unreferencedVertices, "unreferenced vertex", "unreferenced vertices") << " ignored";
-  return s.str();
 }
 
 /// The largest snap distance of one side, with the anchor's name.
@@ -234,27 +97,23 @@ std::string largestSnap(const std::vector<cbd::SnappedAnchor>& anchors) {
   const cbd::SnappedAnchor* worst = nullptr;
   for (const auto& a : anchors)
     if (!worst || a.snapDistance > worst->snapDistance) worst = &a;
-  if (!worst) return "-";
-  return fmt(worst->snapDistance) + " ('" + worst->name + "')";
+  return worst ? cbd::fixed(100 * worst->snapDistance, 2) + " % ('" + worst->name + "')" : "-";
 }
 
-cbdplugin::FilterKind kindOf(int filter) {
-  return filter == FilterCbdPlugin::FP_CROSS_PARAMETERIZE ? cbdplugin::FilterKind::CrossParameterize
-                                                           : cbdplugin::FilterKind::VoronoiBaseDomain;
+int distinct(std::vector<int> labels) {
+  std::sort(labels.begin(), labels.end());
+  return static_cast<int>(std::unique(labels.begin(), labels.end()) - labels.begin());
 }
 
 }  // namespace
 
-FilterCbdPlugin::FilterCbdPlugin() {
-  typeList << FP_VORONOI_BASE_DOMAIN << FP_CROSS_PARAMETERIZE;
-  for (FilterIDType t : types()) actionList << new QAction(filterName(t), this);
-}
+FilterCbdPlugin::FilterCbdPlugin() { CBD_REGISTER_FILTERS(FP_VORONOI_BASE_DOMAIN, FP_CROSS_PARAMETERIZE); }
 
 FilterCbdPlugin::~FilterCbdPlugin() = default;  // the actions are children of this QObject
 
 QString FilterCbdPlugin::pluginName() const { return "FilterCbd"; }
 
-QString FilterCbdPlugin::filterName(FilterIDType filter) const {
+QString FilterCbdPlugin::filterName(int filter) const {
   switch (filter) {
     case FP_VORONOI_BASE_DOMAIN: return QStringLiteral("Voronoi common base domain");
     case FP_CROSS_PARAMETERIZE: return QStringLiteral("Cross-parameterize");
@@ -262,7 +121,7 @@ QString FilterCbdPlugin::filterName(FilterIDType filter) const {
   return QStringLiteral("cbd: unknown filter");
 }
 
-QString FilterCbdPlugin::filterInfo(FilterIDType filter) const {
+QString FilterCbdPlugin::filterInfo(int filter) const {
   const QString common = tr(
       "<br><br>Source and target are two closed, manifold, connected, consistently oriented triangle "
       "meshes of the same genus. Their corresponding anchor points are matched <b>by name</b> "
@@ -270,9 +129,9 @@ QString FilterCbdPlugin::filterInfo(FilterIDType filter) const {
       "PickPoints <i>.pp</i>, <i>index [x y z]</i> lines, or <i>name x y z</i> lines); else the "
       "points picked with <i>Edit &gt; PickPoints</i> on the layer; else the file "
       "<i>&lt;mesh name&gt;_picked_points.pp</i> next to the mesh file. The input layers "
-      "are changed only on success (their face colours), never their geometry.<br><br>See: <i>Tsz-Ho Kwok, Yunbo Zhang, Charlie C. L. Wang</i><br>"
-      "<b>\"Constructing common base domains by cues from Voronoi diagram\"</b><br>"
-      "Graphical Models 74(4), 2012.");
+      "are changed only on success (their face colours), never their geometry.<br><br>See: <i>Tsz-Ho "
+      "Kwok, Yunbo Zhang, Charlie C. L. Wang</i><br><b>\"Constructing common base domains by cues from "
+      "Voronoi diagram\"</b><br>Graphical Models 74(4), 2012.");
   switch (filter) {
     case FP_VORONOI_BASE_DOMAIN:
       return tr("Builds a common base domain of two meshes: corresponding patch layouts on both "
@@ -280,216 +139,293 @@ QString FilterCbdPlugin::filterInfo(FilterIDType filter) const {
                 "diagram of the anchors (or by greedy shortest paths).<br><br>Result: both layers "
                 "coloured per face by patch (corresponding patches get the same colour) or, "
                 "optionally, by Voronoi cluster; a new layer per surface with the layout paths as "
-                "an edge mesh (one colour per path); the log lists the anchors, edges, patches, "
-                "multiple linkages and timings.") + common;
+                "an edge mesh (one colour per path); the log sums it up, then lists the anchors, "
+                "edges, patches and timings.") + common;
     case FP_CROSS_PARAMETERIZE:
       return tr("Builds a common base domain of two meshes and, through it, a cross-parameterization: "
                 "a bijective map between the two surfaces that sends each anchor to its "
-                "corresponding anchor.<br><br>Result: the layer <i>&lt;source&gt; onto "
+                "corresponding anchor.<br><br>Result: the new current layer <i>&lt;source&gt; onto "
                 "&lt;target&gt;</i> (M<sub>st</sub>: the source's triangles with every vertex at its "
                 "image on the target; face quality = L2 stretch, coloured blue - white - red; "
                 "vertex colour transferred from the target when it has vertex colours); both "
                 "layers coloured per face by patch; optionally the layout paths as edge meshes. "
-                "The log lists the distortion (E<sub>ang</sub>, E<sub>L2</sub> and its inverse, "
-                "flipped and degenerate triangles) and timings.") + common;
+                "The log's first line sums up the distortion (E<sub>ang</sub>, E<sub>L2</sub>, "
+                "flipped triangles) and the time; the details follow.") + common;
   }
   return QString();
 }
 
-// Remeshing only: the menu Filters > Remeshing, Simplification and Reconstruction. (MeshCreation
-// would also list the filters under "Create New Mesh Layer" and reset the view; MeshLab sets up
-// the rendering of new layers without it. FaceColoring would list them under "Color Creation".)
-// The face colours of the existing layers are announced by postCondition.
-MeshFilterInterface::FilterClass FilterCbdPlugin::getClass(QAction*) { return MeshFilterInterface::Remeshing; }
+// Remeshing: the menu Filters > Remeshing, Simplification and Reconstruction. (MeshCreation would
+// also list the filters under "Create New Mesh Layer" and reset the view; FaceColoring would list
+// them under "Color Creation".)
+cbdplugin::FilterClassType FilterCbdPlugin::filterClass(int) const { return cbdplugin::FilterBase::Remeshing; }
 
-MeshFilterInterface::FILTER_ARITY FilterCbdPlugin::filterArity(QAction*) const { return FIXED; }
+cbdplugin::Arity FilterCbdPlugin::arity(int) const { return cbdplugin::FilterBase::FIXED; }
 
-int FilterCbdPlugin::getRequirements(QAction*) { return MeshModel::MM_NONE; }
+int FilterCbdPlugin::requirements(int) const { return MeshModel::MM_NONE; }
 
-// The current layer must have faces (MeshLab greys the filter out otherwise).
-int FilterCbdPlugin::getPreConditions(QAction*) const { return MeshModel::MM_FACENUMBER; }
+// None: the filters pick their own layers in their dialog, so MeshLab must not refuse them for
+// what the current layer lacks (a path layer has no faces); the input checks name what is wrong.
+int FilterCbdPlugin::preconditions(int) const { return MeshModel::MM_NONE; }
 
 // What changes on the existing layers: per-face colour (the new layers are set up by MeshLab as
 // new meshes). MeshLab re-uploads these attributes and switches the rendering to face colour.
-int FilterCbdPlugin::postCondition(QAction*) const { return MeshModel::MM_FACECOLOR; }
+int FilterCbdPlugin::postconditions(int) const { return MeshModel::MM_FACECOLOR; }
 
-void FilterCbdPlugin::initParameterSet(QAction* action, MeshDocument& md, RichParameterList& par) {
-  const int id = ID(action);
-  MeshModel* current = md.mm();
-  if (current == nullptr && !md.meshList.isEmpty()) current = md.meshList.first();
-  MeshModel* other = current;
-  for (MeshModel* m : md.meshList)
+void FilterCbdPlugin::parameters(int id, const MeshDocument& md, RichParameterList& par) {
+  const std::vector<const MeshModel*> all = cbdplugin::layers(md);
+  const MeshModel* current = md.mm() ? md.mm() : (all.empty() ? nullptr : all.front());
+  const MeshModel* other = current;
+  for (const MeshModel* m : all)
     if (m != current) {
       other = m;
       break;
     }
-  // RichMesh asserts that its default belongs to the document: with no layer at all, give none.
-  MeshDocument* doc = current ? &md : nullptr;
-  par.addParam(RichMesh(kSourceMesh, current, doc, "Source mesh",
-                        "The source surface (a closed triangle mesh)."));
-  par.addParam(RichMesh(kTargetMesh, other, doc, "Target mesh",
-                        "The target surface: same genus as the source."));
+  par.addParam(cbdplugin::meshParameter(kSourceMesh, current, md, "Source mesh",
+                                        help("The source surface (a closed triangle mesh).")));
+  par.addParam(cbdplugin::meshParameter(kTargetMesh, other, md, "Target mesh",
+                                        help("The target surface: same genus as the source.")));
   const QStringList exts("Anchor files (*.pp *.txt *.vts);;All files (*)");
-  par.addParam(RichOpenFile(kSourceAnchors, QString(), exts, "Source anchors file",
-                            "Empty: the points picked with Edit > PickPoints on the source layer, else "
-                            "<mesh name>_picked_points.pp next to the source mesh file. To clear a chosen "
-                            "file, press the browse button and cancel."));
-  par.addParam(RichOpenFile(kTargetAnchors, QString(), exts, "Target anchors file",
-                            "Empty: the points picked with Edit > PickPoints on the target layer, else "
-                            "<mesh name>_picked_points.pp next to the target mesh file."));
+  par.addParam(cbdplugin::fileParameter(
+      kSourceAnchors, exts, "Source anchors file",
+      help("Empty: the points picked with Edit > PickPoints on the source layer, else "
+           "<mesh name>_picked_points.pp next to the source mesh file. To clear a chosen file, press "
+           "the browse button and cancel.")));
+  par.addParam(cbdplugin::fileParameter(
+      kTargetAnchors, exts, "Target anchors file",
+      help("Empty: the points picked with Edit > PickPoints on the target layer, else "
+           "<mesh name>_picked_points.pp next to the target mesh file.")));
   par.addParam(RichEnum(kMethod, 0, QStringList{"Voronoi", "Greedy shortest paths"}, "Method",
-                        "How the base-domain edges are traced: from cues of the geodesic Voronoi "
-                        "diagram of the anchors, or greedily as shortest paths."));
+                        help("How the base-domain edges are traced: from cues of the geodesic Voronoi "
+                             "diagram of the anchors, or greedily as shortest paths (Kraevoy & Sheffer 2004).")));
   par.addParam(RichInt(kMinEdgeNodes, 3, "Minimum edge nodes",
-                       "b (1..16): the nodes the paths may pass on every edge of the mesh, besides its "
-                       "vertices; 1 with adaptive nodes off is the paper's E1."));
+                       help("b (1..16): the nodes the paths may pass on every edge of the mesh, besides its "
+                            "vertices; 1 with adaptive nodes off is the paper's E1.")));
   par.addParam(RichBool(kAdaptiveEdgeNodes, true, "Adaptive edge nodes",
-                        "More nodes on mesh edges longer than their neighbours' mean: max(b, b l / l_mean) "
-                        "(else every edge gets b)."));
+                        help("More nodes on mesh edges longer than their neighbours' mean: max(b, b l / l_mean) "
+                             "(else every edge gets b).")));
   if (id == FP_VORONOI_BASE_DOMAIN)
     par.addParam(RichBool(kColourByCluster, false, "Colour by Voronoi cluster",
-                          "Colour the two layers per face by the Voronoi cluster of the anchors "
-                          "(corresponding clusters get the same colour) instead of by patch. "
-                          "Voronoi method only."));
+                          help("Colour the two layers per face by the Voronoi cluster of the anchors "
+                               "(corresponding clusters get the same colour) instead of by patch. "
+                               "Voronoi method only.")));
   if (id == FP_CROSS_PARAMETERIZE) {
     par.addParam(RichInt(kStraightenRounds, cbd::PathStraighteningOptions{}.rounds, "Straighten paths (rounds)",
-                         "Rounds straightening every path of both base domains inside its two patches "
-                         "(the diagonal of their quadrilateral mapped onto a square), before the patches "
-                         "are parameterized; the same for either method (0: the paths as traced; at most 8)."));
+                         help("Rounds straightening every path of both base domains inside its two patches "
+                              "(the diagonal of their quadrilateral mapped onto a square), before the patches "
+                              "are parameterized; the same for either method (0: the paths as traced; at most 8).")));
     par.addParam(RichInt(kSmoothingIterations, 0, "Smoothing iterations",
-                         "Smoothing passes over the cross-parameterization (0: none)."));
+                         help("Smoothing passes over the cross-parameterization (0: none; at most 1000).")));
     par.addParam(RichBool(kAddMstLayer, true, "Add M_st layer",
-                          "Add the layer '<source> onto <target>': the source's triangles with every "
-                          "vertex moved to its image on the target. Face quality = L2 stretch "
-                          "(coloured blue - white - red); vertex colour transferred from the target "
-                          "when it has vertex colours."));
+                          help("Add the layer '<source> onto <target>' and make it current: the source's "
+                               "triangles with every vertex moved to its image on the target. Face quality = "
+                               "L2 stretch (coloured blue - white - red); vertex colour transferred from the "
+                               "target when it has vertex colours.")));
     par.addParam(RichBool(kColourByPatch, true, "Colour layers by patch",
-                          "Colour the source and target layers per face by patch of the common base "
-                          "domain (corresponding patches get the same colour)."));
+                          help("Colour the source and target layers per face by patch of the common base "
+                               "domain (corresponding patches get the same colour).")));
     par.addParam(RichBool(kAddPathLayers, false, "Add path layers",
-                          "Also add one edge-mesh layer per surface with the paths of the common "
-                          "base domain."));
+                          help("Also add one edge-mesh layer per surface with the paths of the common "
+                               "base domain.")));
   }
 }
 
-void FilterCbdPlugin::logLine(const std::string& text) { Log(GLLogStream::FILTER, text); }
-
-bool FilterCbdPlugin::fail(const std::string& text) {
-  errorMessage = QString::fromStdString(text);
-  Log(GLLogStream::WARNING, text);  // meshlabserver prints the log, not errorMessage
-  return false;
-}
-
-bool FilterCbdPlugin::applyFilter(QAction* action, MeshDocument& md, const RichParameterList& par,
-                                  vcg::CallBackPos* cb) {
-  errorMessage.clear();
-  std::string name = "cbd";
+cbdplugin::Outcome FilterCbdPlugin::run(int filter, MeshDocument& md, const RichParameterList& par,
+                                        vcg::CallBackPos* cb) {
+  const std::string tag = "cbd: " + str(filterName(filter)) + ": ";
+  cbdplugin::Outcome o;
   try {
-    name = str(filterName(action));
-    return apply(ID(action), md, par, cb);
-  } catch (const AdapterError& e) {
-    return fail("cbd: " + name + ": " + e.status.message + " [" + cbd::errorCodeName(e.status.code) + "]");
+    o = apply(filter, md, par, cb);
+  } catch (const InputError& e) {
+    o.error = tag + e.status.message + " [" + cbd::errorCodeName(e.status.code) + "]";
   } catch (const std::bad_alloc&) {
-    return fail("cbd: " + name + ": out of memory [internal_error]");
+    o.error = tag + "out of memory [internal_error]";
   } catch (const std::exception& e) {
-    return fail("cbd: " + name + ": unexpected error: " + e.what() + " [internal_error]");
+    o.error = tag + "unexpected error: " + e.what() + " [internal_error]";
   } catch (...) {
-    return fail("cbd: " + name + ": unexpected error of unknown type [internal_error]");
+    o.error = tag + "unexpected error of unknown type [internal_error]";
   }
+  // meshlabserver prints the log, not the error dialog's text.
+  if (!o.ok()) logLine(GLLogStream::WARNING, o.error);
+  return o;
 }
 
-bool FilterCbdPlugin::apply(int filter, MeshDocument& md, const RichParameterList& par,
-                            vcg::CallBackPos* cb) {
-  const std::string name = str(filterName(filter));
-  const std::string tag = "cbd: " + name + ": ";
-  auto progress = [cb](int percent, const char* text) {
-    if (cb) (*cb)(percent, text);
-  };
+cbdplugin::Outcome FilterCbdPlugin::apply(int filter, MeshDocument& md, const RichParameterList& par,
+                                          vcg::CallBackPos* cb) {
+  const bool map = filter == FP_CROSS_PARAMETERIZE;
+  const std::string tag = "cbd: " + str(filterName(filter)) + ": ";
+  std::vector<std::string> details;  // logged after the summary line
+  auto detail = [&](const std::string& line) { details.push_back(line); };
 
   // Parameters.
-  MeshModel* sourceLayer = meshParam(par, kSourceMesh);
-  MeshModel* targetLayer = meshParam(par, kTargetMesh);
-  const QString sourcePath = pathParam(par, kSourceAnchors);
-  const QString targetPath = pathParam(par, kTargetAnchors);
-  cbdplugin::PipelineOptions options;
-  const int method = intParam(par, kMethod);
+  MeshModel* sourceLayer = layerParameter(par, kSourceMesh, md);
+  MeshModel* targetLayer = layerParameter(par, kTargetMesh, md);
+  const QString sourceFile = fileParameter(par, kSourceAnchors), targetFile = fileParameter(par, kTargetAnchors);
+  cbd::CrossParameterizationOptions options;
+  const int method = intParameter(par, kMethod);
   if (method != 0 && method != 1)
-    throwError(cbd::ErrorCode::InvalidArgument, "'Method' must be 0 (Voronoi) or 1 (Greedy shortest paths), got " +
-                                               std::to_string(method));
-  options.method = static_cast<cbdplugin::LayoutMethod>(method);
-  options.minEdgeNodes = intParam(par, kMinEdgeNodes);
-  if (options.minEdgeNodes < 1 || options.minEdgeNodes > 16)
-    throwError(cbd::ErrorCode::InvalidArgument,
-               "'Minimum edge nodes' must be in 1..16 (as cbd's --min-edge-nodes), got " + std::to_string(options.minEdgeNodes));
-  options.adaptiveEdgeNodes = boolParam(par, kAdaptiveEdgeNodes);
-  if (filter == FP_CROSS_PARAMETERIZE) {
-    options.straightenRounds = intParam(par, kStraightenRounds);
-    if (options.straightenRounds < 0 || options.straightenRounds > 8)
-      throwError(cbd::ErrorCode::InvalidArgument,
-                 "'Straighten paths (rounds)' must be in 0..8 (each round refines the mesh along the paths), got " + std::to_string(options.straightenRounds));
-    options.smoothingIterations = intParam(par, kSmoothingIterations);
-    if (options.smoothingIterations < 0)
-      throwError(cbd::ErrorCode::InvalidArgument,
-            "'Smoothing iterations' must be >= 0, got " + std::to_string(options.smoothingIterations));
-    options.addMstLayer = boolParam(par, kAddMstLayer);
-    options.colourByPatch = boolParam(par, kColourByPatch);
-    options.addPathLayers = boolParam(par, kAddPathLayers);
+    refuse(cbd::ErrorCode::InvalidArgument, "'Method' must be 0 (Voronoi) or 1 (Greedy shortest paths), got " +
+                                                std::to_string(method));
+  options.method = method == 1 ? cbd::LayoutMethod::Greedy : cbd::LayoutMethod::Voronoi;
+  options.edgeNodes.minEdgeNodes = intParameter(par, kMinEdgeNodes);
+  options.edgeNodes.adaptive = boolParameter(par, kAdaptiveEdgeNodes);
+  bool byCluster = false, colourByPatch = true, addMst = false, addPaths = true;
+  if (map) {
+    options.straightening.rounds = intParameter(par, kStraightenRounds);
+    options.smoothing.iterations = intParameter(par, kSmoothingIterations);
+    addMst = boolParameter(par, kAddMstLayer);
+    colourByPatch = boolParameter(par, kColourByPatch);
+    addPaths = boolParameter(par, kAddPathLayers);
   } else {
-    options.colourByCluster = boolParam(par, kColourByCluster);
-    options.colourByPatch = !options.colourByCluster;
-    options.addPathLayers = true;
-    options.addMstLayer = false;
+    options.straightening.rounds = 0;  // the layout filter shows the paths as traced
+    byCluster = boolParameter(par, kColourByCluster);
   }
-  if (sourceLayer == targetLayer)
-    logLine(tag + "warning: source and target are the same " + layerName(*sourceLayer));
+  if (cbd::Status s = cbd::validate(options); !s) refuse(s.code, s.message);
+  if (sourceLayer == targetLayer) detail(tag + "warning: source and target are the same " + layerName(*sourceLayer));
+
+  // MeshLab's progress bar: reading 0-5 %, the core 5-95 %, the layers 95-100 %.
+  auto bar = [cb](int percent, const char* text) { return cb == nullptr || (*cb)(percent, text); };
+  bar(0, "cbd: reading the layers");
 
   // Layers and anchors (read only).
-  progress(0, "cbd: reading the layers");
-  int sourceDeleted = 0, targetDeleted = 0;
+  cbd::IndexedMesh source, target;
   cbdplugin::LayerIndex sourceIndex, targetIndex;
-  const cbd::IndexedMesh source = toIndexed(*sourceLayer, sourceDeleted, sourceIndex);
-  const cbd::IndexedMesh target = toIndexed(*targetLayer, targetDeleted, targetIndex);
-  const GatheredAnchors sourceAnchors = gatherAnchors(*sourceLayer, sourcePath, "source");
-  const GatheredAnchors targetAnchors = gatherAnchors(*targetLayer, targetPath, "target");
+  int sourceDeleted = 0, targetDeleted = 0;
+  if (cbd::Status s = cbdplugin::toIndexed(*sourceLayer, source, sourceIndex, sourceDeleted); !s) refuse(s.code, s.message);
+  if (cbd::Status s = cbdplugin::toIndexed(*targetLayer, target, targetIndex, targetDeleted); !s) refuse(s.code, s.message);
+  const cbdplugin::GatheredAnchors sa = cbdplugin::gatherAnchors(*sourceLayer, sourceFile, "source");
+  const cbdplugin::GatheredAnchors ta = cbdplugin::gatherAnchors(*targetLayer, targetFile, "target");
   for (const auto& [layer, anchors, deleted] :
-       {std::tuple<const MeshModel*, const GatheredAnchors*, int>{sourceLayer, &sourceAnchors, sourceDeleted},
-        std::tuple<const MeshModel*, const GatheredAnchors*, int>{targetLayer, &targetAnchors, targetDeleted}}) {
+       {std::tuple<const MeshModel*, const cbdplugin::GatheredAnchors*, int>{sourceLayer, &sa, sourceDeleted},
+        std::tuple<const MeshModel*, const cbdplugin::GatheredAnchors*, int>{targetLayer, &ta, targetDeleted}}) {
     if (deleted > 0 && anchors->set.status.ok() && anchors->set.format == cbd::AnchorFormat::VertexList)
-      logLine(tag + "warning: " + layerName(*layer) + " has " + std::to_string(deleted) +
-              " deleted vertices: the anchor vertex indices refer to the compacted layer");
+      detail(tag + "warning: " + layerName(*layer) + " has " + std::to_string(deleted) +
+             " deleted vertices: the anchor vertex indices refer to the compacted layer");
     if (!(layer->cm.Tr == Matrix44m::Identity()))
-      logLine(tag + "warning: " + layerName(*layer) + " has a transformation matrix; cbd uses the untransformed "
-              "vertex coordinates (Filters > Normals, Curvatures and Orientation > Matrix: Freeze Current Matrix)");
+      detail(tag + "warning: " + layerName(*layer) + " has a transformation matrix; cbd uses the untransformed "
+             "vertex coordinates (Filters > Normals, Curvatures and Orientation > Matrix: Freeze Current Matrix)");
   }
 
   // Validation.
-  progress(10, "cbd: validating the input");
-  const cbd::InputReport report =
-      cbd::validateInput(source, target, sourceAnchors.set, targetAnchors.set, cbd::ValidationOptions{});
-  for (const auto* r : {&report.source, &report.target})
-    for (const auto& w : r->warnings) logLine(tag + "warning: " + withLayerNames(w, *sourceLayer, *targetLayer));
-  if (!report.status.ok())
-    return fail(tag + withLayerNames(report.status.message, *sourceLayer, *targetLayer) + " [" +
-                cbd::errorCodeName(report.status.code) + "]");
-
-  logLine(tag + "source " + layerName(*sourceLayer) + ": " + meshSummary(report.source));
-  logLine(tag + "target " + layerName(*targetLayer) + ": " + meshSummary(report.target));
+  const cbd::InputReport report = cbd::validateInput(source, target, sa.set, ta.set, cbd::ValidationOptions{});
+  for (const std::string& w : cbd::inputWarnings(report))
+    detail(tag + "warning: " + withLayerNames(w, *sourceLayer, *targetLayer));
+  if (!report.status) {
+    for (const std::string& line : details) logLine(GLLogStream::FILTER, line);
+    refuse(report.status.code, withLayerNames(report.status.message, *sourceLayer, *targetLayer));
+  }
   std::string anchorsLine = tag + std::to_string(report.anchors.size()) + " anchors matched by name (source: " +
-                            sourceAnchors.origin + ", target: " + targetAnchors.origin + ")";
-  const int inactive = sourceAnchors.set.skippedInactive + targetAnchors.set.skippedInactive;
-  if (inactive > 0) anchorsLine += ", " + std::to_string(inactive) + " inactive points skipped";
-  logLine(anchorsLine);
-  logLine(tag + "largest snap distance (fraction of the bounding-box diagonal): source " +
-          largestSnap(report.anchors.source) + ", target " + largestSnap(report.anchors.target));
-  logLine(tag + "input valid");
+                            sa.origin + ", target: " + ta.origin + ")";
+  if (const int inactive = sa.set.skippedInactive + ta.set.skippedInactive; inactive > 0)
+    anchorsLine += ", " + std::to_string(inactive) + " inactive points skipped";
+  detail(tag + "source " + layerName(*sourceLayer) + ": " + std::to_string(report.source.vertices) + " vertices, " +
+         std::to_string(report.source.faces) + " faces, genus " + std::to_string(report.source.genus));
+  detail(tag + "target " + layerName(*targetLayer) + ": " + std::to_string(report.target.vertices) + " vertices, " +
+         std::to_string(report.target.faces) + " faces, genus " + std::to_string(report.target.genus));
+  detail(anchorsLine);
+  detail(tag + "largest snap distance (of the bounding-box diagonal): source " + largestSnap(report.anchors.source) +
+         ", target " + largestSnap(report.anchors.target));
 
-  // The algorithm stages.
-  progress(20, "cbd: building the common base domain");
-  const cbdplugin::PipelineRequest request{kindOf(filter), name,         source,       target,      sourceIndex,
-                                           targetIndex,    report,       options,      md,          *sourceLayer,
-                                           *targetLayer,   [this](const std::string& s) { logLine(s); }};
-  const cbd::Status status = cbdplugin::runPipeline(request, cb);
-  if (!status.ok()) return fail(status.message);
-  progress(100, "cbd: done");
-  return true;
+  // The core.
+  options.anchorNames = report.anchors.names;
+  std::vector<int> sv, tv;
+  for (const auto& a : report.anchors.source) sv.push_back(a.vertex);
+  for (const auto& a : report.anchors.target) tv.push_back(a.vertex);
+  const int euler = report.source.eulerCharacteristic;
+  const cbd::Progress progress(
+      [&bar](int percent, const char* stage) { return bar(5 + percent * 90 / 100, stage); });
+  auto coreLines = [&](const std::vector<std::string>& lines) {
+    for (const std::string& l : lines) detail(tag + QString::fromStdString(l).simplified().toStdString());
+  };
+  const QString sourceStem = cbdplugin::stem(*sourceLayer), targetStem = cbdplugin::stem(*targetLayer);
+  std::string summary;
+  std::vector<std::string> layerLines;
+
+  if (!map) {
+    cbd::LayoutPair p = cbd::buildLayouts(source, sv, target, tv, euler, options, progress);
+    if (!p.status) refuse(p.status.code, p.status.message);
+    bar(95, "cbd: writing the layers");
+    if (byCluster && (p.source.faceCluster.empty() || p.target.faceCluster.empty())) {
+      detail(tag + "warning: 'Colour by Voronoi cluster' needs the Voronoi method; colouring by patch");
+      byCluster = false;
+    }
+    const std::vector<int> sl = byCluster ? cbd::inputFaceCluster(p.source) : cbd::inputFacePatch(p.source);
+    const std::vector<int> tl = byCluster ? cbd::inputFaceCluster(p.target) : cbd::inputFacePatch(p.target);
+    const cbdplugin::PathLayer sp = cbdplugin::pathLayer(p.source), tp = cbdplugin::pathLayer(p.target);
+    // Success: write the results.
+    cbdplugin::colourFaces(*sourceLayer, sourceIndex, sl);
+    cbdplugin::colourFaces(*targetLayer, targetIndex, tl);
+    const MeshModel* a = cbdplugin::addPathLayer(md, sourceStem + " base domain", sp);
+    const MeshModel* b = cbdplugin::addPathLayer(md, targetStem + " base domain", tp);
+    summary = tag + std::to_string(p.source.edges.size()) + " paths, " + std::to_string(p.source.patches.size()) +
+              " patches on " + quoted(cbdplugin::panelName(*sourceLayer)) + " and " +
+              quoted(cbdplugin::panelName(*targetLayer)) + ", " + cbd::fixed(p.times.voronoi + p.times.sourceLayout + p.times.targetLayout, 2) +
+              " s; new layers " + quoted(cbdplugin::panelName(*a)) + " and " + quoted(cbdplugin::panelName(*b));
+    coreLines(cbd::layoutLines(p));
+    for (const std::string& w : p.warnings) detail(tag + "warning: " + w);
+    coreLines({cbd::timesLine(p.times, false)});
+    layerLines.push_back(tag + "layers " + quoted(cbdplugin::panelName(*sourceLayer)) + " and " +
+                         quoted(cbdplugin::panelName(*targetLayer)) + " coloured per face by " +
+                         (byCluster ? "Voronoi cluster (" : "patch (") + std::to_string(distinct(sl)) + " / " +
+                         std::to_string(distinct(tl)) + " colours; corresponding " +
+                         (byCluster ? "clusters" : "patches") + " share a colour)");
+    layerLines.push_back(tag + "new layers " + quoted(cbdplugin::panelName(*a)) + " and " +
+                         quoted(cbdplugin::panelName(*b)) + ": the layout paths as edge meshes (" +
+                         std::to_string(sp.segments.size()) + " / " + std::to_string(tp.segments.size()) +
+                         " segments; vertex colour per path, vertex quality = path index)");
+  } else {
+    const cbd::CrossParameterizationResult r = cbd::crossParameterize(source, sv, target, tv, euler, options, progress);
+    if (!r.status) refuse(r.status.code, r.status.message);
+    bar(95, "cbd: writing the layers");
+    std::vector<int> sl, tl;
+    if (colourByPatch) sl = cbd::inputFacePatch(r.layouts.source), tl = cbd::inputFacePatch(r.layouts.target);
+    cbdplugin::PathLayer sp, tp;
+    if (addPaths) sp = cbdplugin::pathLayer(r.layouts.source), tp = cbdplugin::pathLayer(r.layouts.target);
+    cbdplugin::MstLayer mst;
+    if (addMst) mst = cbdplugin::mstLayer(source, r, *targetLayer, target, targetIndex);
+    // Success: write the results.
+    if (colourByPatch) {
+      cbdplugin::colourFaces(*sourceLayer, sourceIndex, sl);
+      cbdplugin::colourFaces(*targetLayer, targetIndex, tl);
+    }
+    const MeshModel *a = nullptr, *b = nullptr, *m = nullptr;
+    if (addPaths) {
+      a = cbdplugin::addPathLayer(md, sourceStem + " base domain", sp);
+      b = cbdplugin::addPathLayer(md, targetStem + " base domain", tp);
+    }
+    if (addMst) m = cbdplugin::addMstLayer(md, sourceStem + " onto " + targetStem, mst);
+    summary = tag + quoted(cbdplugin::panelName(*sourceLayer)) + " onto " + quoted(cbdplugin::panelName(*targetLayer)) +
+              ": " + cbd::summary(r.metrics, r.times.total) +
+              (m ? "; new layer " + quoted(cbdplugin::panelName(*m)) + " (M_st)" : std::string());
+    coreLines(cbd::layoutLines(r.layouts));
+    for (const std::string& w : r.layouts.warnings) detail(tag + "warning: " + w);
+    coreLines(cbd::mapLines(r, options));
+    coreLines({cbd::timesLine(r.times, true)});
+    if (colourByPatch)
+      layerLines.push_back(tag + "layers " + quoted(cbdplugin::panelName(*sourceLayer)) + " and " +
+                           quoted(cbdplugin::panelName(*targetLayer)) + " coloured per face by patch (" +
+                           std::to_string(r.layouts.source.patches.size()) +
+                           " patches; corresponding patches share a colour)");
+    if (m) {
+      std::vector<double> s;
+      for (double q : mst.faceQuality)
+        if (!std::isnan(q)) s.push_back(q);
+      std::sort(s.begin(), s.end());
+      layerLines.push_back(
+          tag + "new layer " + quoted(cbdplugin::panelName(*m)) + " (M_st): " + std::to_string(mst.positions.size()) +
+          " vertices, " + std::to_string(mst.faces.size()) + " faces on the target; face quality = L2 stretch (median " +
+          cbd::fixed(s.empty() ? 0.0 : s[s.size() / 2], 3) + ", max " + cbd::fixed(s.empty() ? 0.0 : s.back(), 3) +
+          "), face colour blue (compressed) - white - red (stretched x2)" +
+          (mst.hasVertexColour ? "; vertex colour transferred from the target" : "") +
+          (mst.hasVertexQuality ? "; vertex quality transferred from the target" : ""));
+    }
+    if (a && b)
+      layerLines.push_back(tag + "new layers " + quoted(cbdplugin::panelName(*a)) + " and " +
+                           quoted(cbdplugin::panelName(*b)) + ": the layout paths as edge meshes");
+  }
+  logLine(GLLogStream::FILTER, summary);
+  for (const std::string& line : details) logLine(GLLogStream::FILTER, line);
+  for (const std::string& line : layerLines) logLine(GLLogStream::FILTER, line);
+  bar(100, "cbd: done");
+  return {};
 }

@@ -1,22 +1,24 @@
 #pragma once
 /// @file filter_cbd.h
-/// MeshLab 2020.09 filter plugin of cbd: "Voronoi common base domain" and "Cross-parameterize"
-/// (Filters > Remeshing, Simplification and Reconstruction). A thin adapter: it copies two
-/// layers into cbd::IndexedMesh, gathers their anchors (PickPoints attribute or .pp files),
-/// runs cbd::validateInput, logs a report and hands over to runPipeline (cbd_pipeline.h), which
-/// colours the input layers per face and adds result layers, only once every stage succeeded.
-/// On failure nothing is modified; no exception ever reaches MeshLab.
+/// The cbd filter plugin for MeshLab (2020.09, 2022.02, 2025.07 from this one source; compat.h
+/// holds what differs): "Voronoi common base domain" and "Cross-parameterize", under Filters >
+/// Remeshing, Simplification and Reconstruction. As thin as MeshLab's own filters: parameters in
+/// (two layers, their anchors), one core call (cbd::buildLayouts / cbd::crossParameterize),
+/// layers out (layers.h), and the core's report (cbd/report.h) in the log, its summary first.
+/// On failure nothing is modified and the error names the problem and the fix; no exception
+/// reaches MeshLab.
 
 #include <string>
 
 #include <QObject>
 
-#include <common/interfaces.h>
+#include "compat.h"
 
-class FilterCbdPlugin : public QObject, public MeshFilterInterface {
+class FilterCbdPlugin : public QObject, public cbdplugin::FilterBase {
   Q_OBJECT
-  MESHLAB_PLUGIN_IID_EXPORTER(MESH_FILTER_INTERFACE_IID)
-  Q_INTERFACES(MeshFilterInterface)
+  MESHLAB_PLUGIN_IID_EXPORTER(CBD_FILTER_IID)
+  Q_INTERFACES(CBD_FILTER_INTERFACE)
+  CBD_FILTER_ENTRY_POINTS
 
  public:
   enum { FP_VORONOI_BASE_DOMAIN, FP_CROSS_PARAMETERIZE };
@@ -25,26 +27,17 @@ class FilterCbdPlugin : public QObject, public MeshFilterInterface {
   ~FilterCbdPlugin() override;
 
   QString pluginName() const override;
-  QString filterName(FilterIDType filter) const override;
-  QString filterInfo(FilterIDType filter) const override;
-  FilterClass getClass(QAction* action) override;
-  FILTER_ARITY filterArity(QAction* action) const override;
-  int getRequirements(QAction* action) override;
-  int getPreConditions(QAction* action) const override;
-  int postCondition(QAction* action) const override;
-  void initParameterSet(QAction* action, MeshDocument& md, RichParameterList& par) override;
-  bool applyFilter(QAction* action, MeshDocument& md, const RichParameterList& par,
-                   vcg::CallBackPos* cb) override;
-
-  // Bring the base-class overloads back into scope (hidden by the overrides above).
-  using MeshFilterInterface::filterInfo;
-  using MeshFilterInterface::filterName;
-  using MeshFilterInterface::initParameterSet;
+  QString filterName(int filter) const override;
+  QString filterInfo(int filter) const override;
 
  private:
-  /// The body of applyFilter; may throw (applyFilter catches everything).
-  bool apply(int filter, MeshDocument& md, const RichParameterList& par, vcg::CallBackPos* cb);
-  /// Set errorMessage and log the same text; returns false.
-  bool fail(const std::string& text);
-  void logLine(const std::string& text);
+  cbdplugin::FilterClassType filterClass(int filter) const;
+  cbdplugin::Arity arity(int filter) const;
+  int requirements(int filter) const;
+  int preconditions(int filter) const;
+  int postconditions(int filter) const;
+  void parameters(int filter, const MeshDocument& md, RichParameterList& list);
+  /// The filter; every exception is caught and turned into the outcome's error.
+  cbdplugin::Outcome run(int filter, MeshDocument& md, const RichParameterList& par, vcg::CallBackPos* cb);
+  cbdplugin::Outcome apply(int filter, MeshDocument& md, const RichParameterList& par, vcg::CallBackPos* cb);
 };

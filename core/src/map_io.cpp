@@ -21,34 +21,58 @@ std::array<unsigned char, 3> stretchColor(double s) {
   return {c(r), c(g), c(b)};
 }
 
+VertexValues interpolateAtPoints(const std::vector<std::array<int, 3>>& faces, const std::vector<FacePoint>& points,
+                                 const VertexValues& values, const Eigen::Vector4d& outside) {
+  VertexValues out(points.size(), outside);
+  for (size_t v = 0; v < points.size(); ++v) {
+    const FacePoint& p = points[v];
+    if (p.face < 0 || p.face >= static_cast<int>(faces.size())) continue;
+    const auto& f = faces[static_cast<size_t>(p.face)];
+    out[v] = p.bary[0] * values[f[0]] + p.bary[1] * values[f[1]] + p.bary[2] * values[f[2]];
+  }
+  return out;
+}
+
+unsigned char colorByte(double value) {
+  return static_cast<unsigned char>(std::clamp(std::lround(value), 0L, 255L));
+}
+
 void buildMappedMesh(const Mesh& from, const std::vector<Vec3>& image, const std::vector<FacePoint>& points,
                      const Mesh& onto, const TransferOptions& transfer, const std::vector<double>& faceStretch,
                      Mesh& out) {
   // vcglib 2020.09's MeshCopy takes a non-const source although it only reads it.
   vcg::tri::Append<Mesh, Mesh>::MeshCopy(out, const_cast<Mesh&>(from));
-  for (size_t v = 0; v < out.vert.size(); ++v) {
-    out.vert[v].P() = vcg::Point3d(image[v].x(), image[v].y(), image[v].z());
-    const FacePoint& fp = points[v];
-    if (fp.face < 0) continue;
-    const auto& f = onto.face[fp.face];
-    if (transfer.vertexColor) {
-      double c[4] = {0, 0, 0, 0};
-      for (int k = 0; k < 3; ++k)
-        for (int i = 0; i < 4; ++i) c[i] += fp.bary[k] * f.cV(k)->cC()[i];
-      out.vert[v].C() = vcg::Color4b(static_cast<unsigned char>(std::lround(c[0])), static_cast<unsigned char>(std::lround(c[1])),
-                                     static_cast<unsigned char>(std::lround(c[2])), static_cast<unsigned char>(std::lround(c[3])));
-    }
-    if (transfer.vertexQuality) {
-      double q = 0;
-      for (int k = 0; k < 3; ++k) q += fp.bary[k] * f.cV(k)->cQ();
-      out.vert[v].Q() = q;
-    }
-    if (transfer.vertexTexCoord) {
-      double u = 0, w = 0;
-      for (int k = 0; k < 3; ++k) u += fp.bary[k] * f.cV(k)->cT().U(), w += fp.bary[k] * f.cV(k)->cT().V();
-      out.vert[v].T().U() = u;
-      out.vert[v].T().V() = w;
-      out.vert[v].T().N() = f.cV(0)->cT().N();
+  for (size_t v = 0; v < out.vert.size(); ++v) out.vert[v].P() = vcg::Point3d(image[v].x(), image[v].y(), image[v].z());
+  // The attributes of `onto`, blended at the images (faces and vertices of `onto` in file order,
+  // as FacePoint counts them).
+  std::vector<std::array<int, 3>> faces(onto.face.size());
+  for (size_t f = 0; f < onto.face.size(); ++f)
+    for (int k = 0; k < 3; ++k) faces[f][k] = static_cast<int>(vcg::tri::Index(onto, onto.face[f].cV(k)));
+  auto transferred = [&](auto value) {
+    VertexValues at(onto.vert.size());
+    for (size_t v = 0; v < onto.vert.size(); ++v) at[v] = value(onto.vert[v]);
+    return interpolateAtPoints(faces, points, at, Eigen::Vector4d::Constant(std::nan("")));
+  };
+  auto known = [](const Eigen::Vector4d& x) { return !std::isnan(x[0]); };
+  if (transfer.vertexColor) {
+    const VertexValues c = transferred([](const auto& v) {
+      return Eigen::Vector4d(v.cC()[0], v.cC()[1], v.cC()[2], v.cC()[3]);
+    });
+    for (size_t v = 0; v < out.vert.size(); ++v)
+      if (known(c[v])) out.vert[v].C() = vcg::Color4b(colorByte(c[v][0]), colorByte(c[v][1]), colorByte(c[v][2]), colorByte(c[v][3]));
+  }
+  if (transfer.vertexQuality) {
+    const VertexValues q = transferred([](const auto& v) { return Eigen::Vector4d(v.cQ(), 0, 0, 0); });
+    for (size_t v = 0; v < out.vert.size(); ++v)
+      if (known(q[v])) out.vert[v].Q() = q[v][0];
+  }
+  if (transfer.vertexTexCoord) {
+    const VertexValues t = transferred([](const auto& v) { return Eigen::Vector4d(v.cT().U(), v.cT().V(), 0, 0); });
+    for (size_t v = 0; v < out.vert.size(); ++v) {
+      if (!known(t[v])) continue;
+      out.vert[v].T().U() = t[v][0];
+      out.vert[v].T().V() = t[v][1];
+      out.vert[v].T().N() = onto.face[points[v].face].cV(0)->cT().N();
     }
   }
   for (size_t f = 0; f < out.face.size() && f < faceStretch.size(); ++f) {

@@ -92,9 +92,15 @@ for f in source_patches.ply target_patches.ply mst.ply meshlabserver.log; do
 done
 T="cbd: Cross-parameterize: "
 expect "$OUT/meshlabserver.log" "${T}28 anchors matched by name" "anchors not matched"
-expect "$OUT/meshlabserver.log" "${T}layout (voronoi): " "no layout report"
-expect "$OUT/meshlabserver.log" "${T}map: E_ang " "no distortion report"
-expect "$OUT/meshlabserver.log" "${T}timings: " "no timings"
+expect "$OUT/meshlabserver.log" "${T}layout voronoi: " "no layout report"
+expect "$OUT/meshlabserver.log" "${T}map E_ang " "no distortion report"
+expect "$OUT/meshlabserver.log" "${T}time voronoi " "no timings"
+# The summary comes first: the plugin's first line gives the distortion and the new layer.
+first=$(grep -m1 -F "$T" "$OUT/meshlabserver.log")
+case "$first" in
+  *"${T}'cow' onto 'bull': E_ang "*" flipped triangle"*"; new layer 'cow onto bull' (M_st)"*) ;;
+  *) fail "the first line of the plugin's log is not the summary: $first" ;;
+esac
 expect "$OUT/meshlabserver.log" "${T}new layer 'cow onto bull' (M_st): 2904 vertices" "no M_st layer"
 check mst "$OUT/mst.ply" "$DATA/bull.off" 2904 1e-4
 check counts "$OUT/mst.ply" 2904 5804
@@ -114,8 +120,9 @@ run_server voronoi -i "$VOR/cow.off" "$VOR/bull.off" -s "$VORONOI_MLX" \
 [ "$RC" -eq 0 ] || { tail -30 "$RUNS/voronoi.all" >&2; fail "voronoi: meshlabserver exited $RC"; }
 T="cbd: Voronoi common base domain: "
 expect "$RUNS/voronoi.all" "${T}28 anchors matched by name (source: file '$VOR/cow_picked_points.pp', target: file '$VOR/bull_picked_points.pp')" "anchors not found next to the meshes"
-expect "$RUNS/voronoi.all" "${T}layout (voronoi): 78 edges, 52 patches" "no layout report"
-expect "$RUNS/voronoi.all" "${T}timings: " "no timings"
+expect "$RUNS/voronoi.all" "${T}78 paths, 52 patches on 'cow' and 'bull'" "no summary"
+expect "$RUNS/voronoi.all" "${T}layout voronoi: 78 edges (" "no layout report"
+expect "$RUNS/voronoi.all" "${T}time voronoi " "no timings"
 expect "$RUNS/voronoi.all" "${T}new layers 'cow base domain' and 'bull base domain'" "no path layers"
 expect "$RUNS/voronoi.all" "saved as $RUNS/vor_cow_paths.ply" "path layer not saved"
 check colours "$RUNS/vor_cow.ply" "$RUNS/vor_bull.ply" 52

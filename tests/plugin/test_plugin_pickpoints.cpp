@@ -19,6 +19,8 @@
 #include <cstdio>
 #include <cstdlib>
 #include <set>
+#include <utility>
+#include <vector>
 #include <string>
 
 // The OFF importer first: it uses GLU tessellation when gl.h was included before it.
@@ -27,6 +29,8 @@
 
 #include <QApplication>
 #include <QDir>
+#include <QRegularExpression>
+#include <QTextDocumentFragment>
 
 #include <common/GLLogStream.h>
 #include <common/interfaces.h>
@@ -81,6 +85,13 @@ std::set<std::array<int, 3>> faceColours(const MeshModel& m) {
   return s;
 }
 
+/// What the plugin reports to MeshLab's progress bar (MainWindow::QCallBack in the GUI).
+std::vector<std::pair<int, std::string>> progressSeen;
+bool recordProgress(const int percent, const char* text) {
+  progressSeen.emplace_back(percent, text ? text : "");
+  return true;
+}
+
 bool logHas(const GLLogStream& log, const QString& text) {
   for (const auto& line : log.logStringList())
     if (line.second.contains(text)) return true;
@@ -131,7 +142,7 @@ int main(int argc, char** argv) {
     RichParameterList par = params(cross);
     const bool ok = filter->applyFilter(cross, md, par, nullptr);
     check(!ok, "Cross-parameterize fails without picked points on the target");
-    check(filter->errorMsg().contains("no target anchors: layer 'target.off' has no picked points and no file name"),
+    check(filter->errorMsg().contains("no target anchors: layer 'target' has no picked points and no file name"),
           "the error names the target layer: " + filter->errorMsg().toStdString());
     check(logHas(log, "no target anchors"), "the error is in the log");
     check(md.size() == 2 && !source->hasDataMask(MeshModel::MM_FACECOLOR) &&
@@ -144,17 +155,41 @@ int main(int argc, char** argv) {
   log.Clear();
   {
     RichParameterList par = params(cross);
-    const bool ok = filter->applyFilter(cross, md, par, nullptr);
+    progressSeen.clear();
+    const bool ok = filter->applyFilter(cross, md, par, recordProgress);
+    // The bar moves through every stage, with the stage's name, not only at the ends.
+    std::set<int> middle;
+    std::set<std::string> stages;
+    bool monotone = true;
+    for (size_t k = 0; k < progressSeen.size(); ++k) {
+      if (progressSeen[k].first > 25 && progressSeen[k].first < 95) middle.insert(progressSeen[k].first);
+      stages.insert(progressSeen[k].second);
+      monotone = monotone && (k == 0 || progressSeen[k].first >= progressSeen[k - 1].first);
+    }
+    check(middle.size() >= 10 && monotone && progressSeen.back().first == 100,
+          "the progress bar moves past 25 % in " + std::to_string(middle.size()) + " steps, never back, to 100 %");
+    check(stages.count("tracing the base domain") && stages.count("mapping the patches") &&
+              stages.count("polishing the map"),
+          "the stages are named: " + [&] {
+            std::string all;
+            for (const std::string& n : stages) all += (all.empty() ? "" : ", ") + n;
+            return all;
+          }());
     if (!ok) dumpLog(log);
     check(ok, "Cross-parameterize succeeds with anchors from PickPoints");
-    check(logHas(log, "anchors matched by name (source: PickPoints of layer 'source.off', target: PickPoints of "
-                      "layer 'target.off'), 1 inactive points skipped"),
+    check(logHas(log, "anchors matched by name (source: PickPoints of layer 'source', target: PickPoints of "
+                      "layer 'target'), 1 inactive points skipped"),
           "the anchors came from the PickedPoints attributes (inactive point skipped)");
     check(md.size() == 3, "one new layer (M_st): " + std::to_string(md.size()) + " layers");
     MeshModel* mst = md.size() == 3 ? md.meshList.at(2) : nullptr;
     check(mst && mst->label() == "source onto target" && mst->cm.vn == sourceVertices &&
               mst->cm.fn == source->cm.fn && mst->hasDataMask(MeshModel::MM_FACEQUALITY),
           "M_st 'source onto target' has the source's vertex and face counts and face quality");
+    check(mst && md.mm() == mst, "M_st is the current layer");
+    check(!log.logStringList().empty() && log.logStringList().front().second.startsWith(
+              "cbd: Cross-parameterize: 'source' onto 'target': E_ang "),
+          "the log's first line is the summary: " +
+              (log.logStringList().empty() ? std::string() : log.logStringList().front().second.toStdString()));
     const auto sc = faceColours(*source), tc = faceColours(*target);
     check(sc == tc && static_cast<int>(sc.size()) == patches,
           "both layers coloured by patch, same colour set: " + std::to_string(sc.size()) + " / " +
@@ -178,7 +213,43 @@ int main(int argc, char** argv) {
     check(md.size() == layers + 2 && md.meshList.at(layers)->cm.en > 0 && md.meshList.at(layers + 1)->cm.en > 0 &&
               md.meshList.at(layers)->cm.fn == 0,
           "two new path layers (edge meshes)");
-    check(logHas(log, "layout (voronoi): ") && logHas(log, "timings: "), "the log lists the layout and the timings");
+    check(logHas(log, "layout voronoi: ") && logHas(log, "time voronoi "), "the log lists the layout and the timings");
+  }
+
+  // 4. Cross-parameterize again: MeshLab makes the new label unique, and the log names the layer
+  //    as the layer panel shows it.
+  log.Clear();
+  {
+    RichParameterList par = params(cross);
+    const bool ok = filter->applyFilter(cross, md, par, nullptr);
+    check(ok, "Cross-parameterize runs a second time");
+    MeshModel* again = md.mm();
+    const std::string label = again ? again->label().toStdString() : std::string();
+    check(again && again->cm.vn == sourceVertices && label != "source onto target",
+          "the second M_st is current, under a label of its own: '" + label + "'");
+    check(logHas(log, QString::fromStdString("new layer '" + label + "' (M_st)")),
+          "the log names the second M_st '" + label + "'");
+  }
+
+  // 5. Help texts: rich text in MeshLab's dialog; no word may read as a tag.
+  {
+    QStringList texts;
+    for (QAction* a : {cross, voronoi}) {
+      texts << filter->filterInfo(a);
+      RichParameterList par = params(a);
+      for (auto it = par.begin(); it != par.end(); ++it) texts << it->fieldDescription() << it->toolTip();
+    }
+    const QRegularExpression tag("<(?!/?(b|i|br|sub)>)[^>]*>");
+    int stray = 0;
+    for (const QString& t : texts)
+      if (tag.match(t).hasMatch()) {
+        ++stray;
+        std::printf("  stray markup: %s\n", qUtf8Printable(tag.match(t).captured(0)));
+      }
+    check(stray == 0, "no help text holds markup Qt would drop");
+    const QString plain = QTextDocumentFragment::fromHtml(texts.join("<br>")).toPlainText();
+    check(plain.contains("'<source> onto <target>'") && plain.contains("<mesh name>_picked_points.pp"),
+          "the help shows '<source> onto <target>' and '<mesh name>_picked_points.pp' as written");
   }
 
   for (MeshModel* m : {source, target})

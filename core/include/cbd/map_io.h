@@ -26,6 +26,18 @@ std::string morphFileName(int k);
 /// on a log scale; grey for NaN. Used for mst.ply and by the plugin.
 std::array<unsigned char, 3> stretchColor(double stretch);
 
+/// Per-vertex values of a mesh (up to four channels: a colour, a quality, texture coordinates).
+using VertexValues = std::vector<Eigen::Vector4d>;
+
+/// `values` (one per vertex of the mesh whose faces are `faces`) at each of `points`: the
+/// barycentric blend of the three values of the point's face; `outside` for a point with face -1.
+/// How M_st gets the target's colours, and M_ts the source's (here and in the plugin).
+VertexValues interpolateAtPoints(const std::vector<std::array<int, 3>>& faces, const std::vector<FacePoint>& points,
+                                 const VertexValues& values, const Eigen::Vector4d& outside = Eigen::Vector4d::Zero());
+
+/// A colour channel in 0..255 from a blended value.
+unsigned char colorByte(double value);
+
 /// Which attributes of the mesh the image lies on are transferred to the mapped mesh.
 struct TransferOptions {
   bool vertexColor = false;
