@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
-# Set everything up (Debian packages, MeshLab SDK), build, and pass the test suite:
-#   1. the release build: every unit, CLI and plugin test (ctest);
+# Set everything up (Debian packages, MeshLab 2020.09's SDK, MeshLab 2025.07 built from Debian's
+# source tarball by scripts/meshlab_2025.sh), build, and pass the test suite:
+#   1. the release build: every unit, CLI and plugin test (ctest), the plugin against both
+#      MeshLab 2020.09 and 2025.07 (and compiled against 2022.02's headers);
 #   2. the same suite built with AddressSanitizer + UndefinedBehaviorSanitizer (no plugin:
 #      MeshLab itself is not built with them);
 #   3. a short libFuzzer run of the anchor parsers and the mesh loaders: inputs that once
@@ -12,6 +14,7 @@ ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 . "$ROOT/scripts/args.sh"; cbd_args 0 "$@"
 FUZZ_RUNS="${FUZZ_RUNS:-600000}"
 "$ROOT/scripts/setup.sh"
+"$ROOT/scripts/meshlab_2025.sh"
 
 echo "== release build and tests"
 "$ROOT/scripts/build.sh" "$ROOT/build"

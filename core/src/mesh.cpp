@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <type_traits>
 #include <sstream>
 #include <string_view>
 #include <system_error>
@@ -663,9 +664,12 @@ Status savePly(const std::string& path, const Mesh& mesh, const SavePlyOptions& 
     pi.AddPerVertexFloatAttribute("texture_u");
     pi.AddPerVertexFloatAttribute("texture_v");
     err = io::ExporterPLY<Mesh>::Save(copy, tmp.string().c_str(), options.binary, pi);
-    // PlyInfo strdup()s the property names and never frees them; vcglib 2020.09's mesh does not
-    // free its attributes either.
-    for (auto& d : pi.VertDescriptorVec) std::free(const_cast<char*>(d.propname));
+    // vcglib 2020.09's PlyInfo strdup()s the property names and never frees them (later vcglibs,
+    // which the MeshLab 2025.07 plugin's core is built with, keep them as std::string).
+    auto freeName = [](auto& d) {
+      if constexpr (std::is_pointer_v<std::decay_t<decltype(d.propname)>>) std::free(const_cast<char*>(d.propname));
+    };
+    for (auto& d : pi.VertDescriptorVec) freeName(d);
     vcg::tri::Allocator<Mesh>::DeletePerVertexAttribute(copy, u);
     vcg::tri::Allocator<Mesh>::DeletePerVertexAttribute(copy, v);
   } else {

@@ -47,7 +47,7 @@ PREFIX="$TMP/prefix"
 DATA="$TMP/data"   # the inputs; nothing may change here
 RUNS="$TMP/runs"
 mkdir -p "$DATA" "$RUNS"
-export CBD_PLUGIN_SO="$PLUGIN_SO" CBD_MESHLAB_PREFIX="$PREFIX"
+export CBD_PLUGIN_SO="$PLUGIN_SO" CBD_MESHLAB_PREFIX="$PREFIX" CBD_MESHLAB=2020
 
 # Inputs, under names that are not PickPoints' (the wrapper must stage them itself).
 cp "$MESHES/cow.off" "$MESHES/bull.off" "$DATA/"
@@ -87,21 +87,21 @@ expect() {  # file fixed-string what
 OUT="$TMP/out"
 "$WRAPPER" "$DATA/cow.off" "$DATA/cow_anchors.pp" "$DATA/bull.off" "$DATA/bull_anchors.pp" "$OUT" \
   >"$RUNS/wrapper.out" 2>&1 || { cat "$RUNS/wrapper.out" >&2; fail "cross_parameterize.sh failed"; }
-for f in source_patches.ply target_patches.ply mst.ply meshlabserver.log; do
+for f in source_patches.ply target_patches.ply mst.ply meshlab.log; do
   [ -s "$OUT/$f" ] || fail "cross_parameterize.sh did not write $f"
 done
 T="cbd: Cross-parameterize: "
-expect "$OUT/meshlabserver.log" "${T}28 anchors matched by name" "anchors not matched"
-expect "$OUT/meshlabserver.log" "${T}layout voronoi: " "no layout report"
-expect "$OUT/meshlabserver.log" "${T}map E_ang " "no distortion report"
-expect "$OUT/meshlabserver.log" "${T}time voronoi " "no timings"
+expect "$OUT/meshlab.log" "${T}28 anchors matched by name" "anchors not matched"
+expect "$OUT/meshlab.log" "${T}layout voronoi: " "no layout report"
+expect "$OUT/meshlab.log" "${T}map E_ang " "no distortion report"
+expect "$OUT/meshlab.log" "${T}time voronoi " "no timings"
 # The summary comes first: the plugin's first line gives the distortion and the new layer.
-first=$(grep -m1 -F "$T" "$OUT/meshlabserver.log")
+first=$(grep -m1 -F "$T" "$OUT/meshlab.log")
 case "$first" in
   *"${T}'cow' onto 'bull': E_ang "*" flipped triangle"*"; new layer 'cow onto bull' (M_st)"*) ;;
   *) fail "the first line of the plugin's log is not the summary: $first" ;;
 esac
-expect "$OUT/meshlabserver.log" "${T}new layer 'cow onto bull' (M_st): 2904 vertices" "no M_st layer"
+expect "$OUT/meshlab.log" "${T}new layer 'cow onto bull' (M_st): 2904 vertices" "no M_st layer"
 check mst "$OUT/mst.ply" "$DATA/bull.off" 2904 1e-4
 check counts "$OUT/mst.ply" 2904 5804
 check counts "$OUT/source_patches.ply" 2904 5804
@@ -152,7 +152,7 @@ RC=$?
 [ "$RC" -eq 1 ] || { cat "$RUNS/mismatch.out" >&2; fail "mismatch: cross_parameterize.sh exited $RC (expected 1)"; }
 expect "$RUNS/mismatch.out" "[anchor_name_mismatch]" "the wrapper did not report the plugin's error"
 expect "$RUNS/mismatch.out" "chin" "the error does not name the unmatched anchor"
-expect "$OUT2/meshlabserver.log" "[anchor_name_mismatch]" "the error is not in the MeshLab log"
+expect "$OUT2/meshlab.log" "[anchor_name_mismatch]" "the error is not in the MeshLab log"
 [ ! -e "$OUT2/mst.ply" ] || fail "mismatch: mst.ply written after a failure"
 info "ok: mismatched anchor names: $(grep -F '[anchor_name_mismatch]' "$RUNS/mismatch.out" | head -1 | cut -c1-160)"
 
