@@ -1000,8 +1000,8 @@ MapUntangleResult untangleCrossMap(const IndexedMesh& S, const IndexedMesh& T, c
       }
     };
     restartAtAnchors(options);
-    // Folds that all that leaves far from every anchor (man -> homer with one edge node: the
-    // man's fingers on homer's stubbier hands, 18-26 rings from the nearest anchor) give way to
+    // Folds that all that leaves far from every anchor (long thin parts mapped onto stubbier
+    // ones, many rings from the nearest anchor) give way to
     // relaxation and energy over wider rings: the whole untangling once more from the composed
     // map with `retryMaxRing`, with each bound in turn, kept by the same rule.
     if (r.flippedAfter > 0 && options.retryMaxRing > options.maxRing) {
@@ -1021,8 +1021,8 @@ MapUntangleResult untangleCrossMap(const IndexedMesh& S, const IndexedMesh& T, c
       restartAtAnchors(wide);
     }
     // All of that is kept only when it left fewer flips than the composed map had, or as few
-    // (on a pair whose layouts disagree wildly, few anchors, the moves can multiply them: cow ->
-    // bull with 3 anchors, M_ts from 12 to 193).
+    // (on a pair whose layouts disagree wildly, as with very few anchors, the moves can
+    // multiply them).
     if (r.flippedAfter > before) {
       onTarget = startOn, image = startImage;
       r.flippedAfter = before, r.moves = 0;  // the moves discarded are not reported

@@ -132,12 +132,11 @@ SourceLayoutResult buildSourceLayout(const IndexedMesh& input, const std::vector
 
   // 2. Triangulate every region that is not a triangle, with paths searched inside it.
   const int maxExtra = options.maxTriangulationPaths >= 0 ? options.maxTriangulationPaths : 4 * na + 64;
-  // Every path the triangulation adds counts against `maxExtra`,
-  // even one later dropped with an empty 2-gon, so when the cut paths leave more than that to
-  // add, the layout cannot be finished: say so now instead of searching until the cap is hit
-  // (cheese, genus 133, with 12 anchors: 732 paths left to add against 112 allowed; the search
-  // ran past 15 minutes, taking back link after link, its refined mesh growing threefold in the
-  // first minute).
+  // Every path the triangulation adds counts against `maxExtra`, even one later dropped with an
+  // empty 2-gon, so when the cut paths leave more than that to add, the layout cannot be
+  // finished: say so now instead of searching until the cap is hit (on a surface of high genus
+  // with few anchors that search takes back link after link for a long time while the refined
+  // mesh grows).
   {
     if (needed - r.cutPaths > maxExtra) {
       const int genus = (2 - chi) / 2;
@@ -286,8 +285,8 @@ SourceLayoutResult buildSourceLayout(const IndexedMesh& input, const std::vector
     // A link that leaves a piece no path can ever make a triangle (an empty 2-gon, whose removal
     // would only undo the link, or any region with only two anchors for corners and none inside)
     // is taken back and not tried again in this region: in a region with a handle, the shortest
-    // link between two of its corners can run along a side, and re-tracing it forever grew the
-    // refined mesh without bound (a double torus with 4 random anchors: 24 GB).
+    // link between two of its corners can run along a side, and re-tracing it forever would grow
+    // the refined mesh without bound.
     refreshAnchorOf();
     if (cutsOffDeadPiece(L.mesh, tracer.edgePath(), anchorOf, paths.edges[id].vertices, scratch)) {
       tracer.release(paths.edges[id].vertices, id);

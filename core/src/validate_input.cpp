@@ -323,9 +323,8 @@ InputReport validateInput(const IndexedMesh& source, const IndexedMesh& target,
     return r;
   }
   // Faces outward on one surface and inward on the other (an inside-out export): the layouts'
-  // cyclic orders around the anchors disagree everywhere and the map folds over (cow -> bull
-  // with the cow inside out ran past 180 s in the untangling; without it, the map had about a
-  // thousand flipped triangles). A volume within rounding of 0 says nothing and is let through.
+  // cyclic orders around the anchors disagree everywhere and the map folds over everywhere, which
+  // no later stage can undo. A volume within rounding of 0 says nothing and is let through.
   {
     auto sign = [](const MeshReport& m) {
       const double scale = m.bboxDiagonal * m.bboxDiagonal * m.bboxDiagonal;

@@ -55,8 +55,8 @@ namespace cbd {
 /// Options of `untangleCrossMap`.
 struct MapUntangleOptions {
   int maxRounds = 40;     ///< rounds of (local moves, relaxation of a ring, of folds) at most
-  /// Widest ring (in source edges) around a flip that relaxation may move (6 left folds in the
-  /// man's hands on man -> homer that 10 undoes).
+  /// Widest ring (in source edges) around a flip that relaxation may move: wide enough for folds
+  /// across a thin limb, narrow enough that the rest of the map stays as composed.
   int maxRing = 10;
   /// A move may not leave a triangle of the vertex with a distortion above this (angle
   /// distortion (s1/s2 + s2/s1)/2 - 1 plus the same of its area ratio to the global one),
@@ -64,15 +64,13 @@ struct MapUntangleOptions {
   /// higher bound removes more flips and raises E_L2).
   double maxDistortion = 10.0;
   /// Sweeps over all vertices at the end (the polish) whose moves lower the metrics and add no
-  /// flip (0: only the neighbourhoods of flips are touched).
-  /// Gauss-Seidel converges slowly: on camel -> diplodocus-25 both methods' E_ang still fall
-  /// by a tenth from 30 to 100 sweeps.
+  /// flip (0: only the neighbourhoods of flips are touched). Gauss-Seidel converges slowly, so
+  /// the cap is generous; `polishTolerance` ends it earlier.
   int polishSweeps = 100;
   /// The polish keeps a move when it lowers E_ang x E_L2^polishStretchWeight (true), or only
   /// when it raises neither metric and lowers one (false). The product lets a move trade a
-  /// little of one for more of the other, which badly stretched triangles need. Measured on
-  /// the eight bench pairs, both methods, 10 sweeps: E_ang lower in 15 of 16 runs, E_L2 in 11
-  /// (man -> homer-70 Voronoi 0.774 / 2.105 -> 0.752 / 1.631), the rest higher by <= 0.03.
+  /// little of one for more of the other, which badly stretched triangles need (bench/README.md
+  /// compares both rules).
   bool polishProduct = true;
   double polishStretchWeight = 2.0;
   /// The polish stops early when a sweep lowers that product (else: either metric) by less
@@ -112,13 +110,12 @@ struct MapUntangleOptions {
   /// When flips survive even that, the untangling once more from the composed map with
   /// `maxRing` widened to this (relaxation and energy reach that far round a flip), with
   /// `maxDistortion` and then each of `retryDistortions`, until one leaves no flip; kept by the
-  /// same rule (fewer flips, or as few and a lower E_ang x E_L2^polishStretchWeight). For
-  /// folds far from every anchor that 10 rings cannot undo (man -> homer with one edge node:
-  /// the man's fingers, 18-26 rings from an anchor). Not the default `maxRing`: 20 throughout
-  /// moves every bench pair's E_L2, by up to 10 % either way. After it, flips next to anchors
-  /// get the anchor restarts once more, untangled with these rings (man -> homer-70 with the
-  /// paths waiting for passed anchors, `TargetLayoutOptions`: a star folded against a bundle of
-  /// three paths that leave the anchor within 6 degrees, 1 flip left without). <= maxRing: never.
+  /// same rule (fewer flips, or as few and a lower E_ang x E_L2^polishStretchWeight): for folds
+  /// far from every anchor (long thin parts such as fingers) that `maxRing` rings cannot undo.
+  /// Not the default `maxRing`, because wider rings everywhere move maps that had no such fold.
+  /// After it, flips next to anchors get the anchor restarts once more, untangled with these
+  /// rings (a star folded against a bundle of paths leaving the anchor at nearly one angle).
+  /// <= maxRing: never.
   int retryMaxRing = 20;
 };
 

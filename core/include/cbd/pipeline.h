@@ -46,9 +46,8 @@ struct CrossParameterizationOptions {
   /// traced on the source — and the one with the smaller detour is kept. 0: never.
   double reverseDetour = 2.0;
   /// When the layouts kept detour more than this (`LayoutPair::detour`), `LayoutPair::warnings`
-  /// says the anchors may not correspond in shape. On the 8 bench pairs the layouts kept detour
-  /// 1.23-1.65 with either method; cow -> bull with the bull's anchors swapped left for right
-  /// 2.27 (Voronoi, both diagrams tried) and 1.89 (greedy). 0: never.
+  /// says the anchors may not correspond in shape: corresponding anchors give detours well below
+  /// it, anchors swapped left for right above it (bench/README.md lists the detours). 0: never.
   double detourWarning = 1.8;
   /// Voronoi method: the greedy baseline's path flipping (`flipLayoutPaths`) applied to its
   /// layouts too, after they are built (the baseline always flips, as the paper grants it).
@@ -122,7 +121,7 @@ struct LayoutPair {
 /// How much the paths of two isomorphic layouts disagree in length: the mean over edges of
 /// max(r/m, m/r), r the target/source length ratio of an edge and m the median ratio. 1 when
 /// every path is scaled alike; a twisted target layout, whose paths detour around anchors,
-/// scores far higher (cow -> bull with adaptive edge nodes: 3.6, the other bundled pairs 1.25-1.7).
+/// scores far higher.
 double lengthDetour(const Layout& source, const Layout& target);
 
 /// Build both layouts with the chosen method and check them (validateLayout on both surfaces,
