@@ -364,12 +364,12 @@ int main(int argc, char** argv) {
   cmdMap->add_option("--map-stage", map.mapStage,
                      "untangle: remove flipped triangles of M_st and M_ts, then polish (the default); optimize "
                      "(experimental): M_st optimized in the base domain by Newton's method, injective there, "
-                     "M_ts its exact inverse, but with flipped triangles left (see README)")
+                     "M_ts its exact inverse, but with flipped triangles left (see docs/algorithm.md)")
       ->capture_default_str()
       ->check(CLI::IsMember({"untangle", "optimize"}));
   cmdMap->add_flag("--no-untangle", map.noUntangle,
                    "keep the composed map as it is: do not move the images of the vertices of flipped M_st / M_ts "
-                   "triangles over the target (the default removes most flips, then polishes the map; see README)");
+                   "triangles over the target (the default removes most flips, then polishes the map; see docs/algorithm.md)");
   cmdMap->add_option("--morph", map.morph, "also write K meshes OUT/morph_000.ply ... blending the source (fitted onto the target by its anchors) into M_st; "
                      "later frames of an earlier, longer sequence in OUT are removed")
       ->check(range(cbd::kMorphFramesRange));

@@ -130,7 +130,7 @@ QString FilterCbdPlugin::filterInfo(int filter) const {
       "points picked with <i>Edit &gt; PickPoints</i> on the layer; else the file "
       "<i>&lt;mesh name&gt;_picked_points.pp</i> next to the mesh file. The input layers "
       "are changed only on success (their face colours), never their geometry.<br><br>See: <i>Tsz-Ho "
-      "Kwok, Yunbo Zhang, Charlie C. L. Wang</i><br><b>\"Constructing common base domains by cues from "
+      "Kwok, Yunbo Zhang, Charlie C. L. Wang</i><br><b>\"Constructing common base domain by cues from "
       "Voronoi diagram\"</b><br>Graphical Models 74(4), 2012.");
   switch (filter) {
     case FP_VORONOI_BASE_DOMAIN:

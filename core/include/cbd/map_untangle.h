@@ -69,8 +69,7 @@ struct MapUntangleOptions {
   int polishSweeps = 100;
   /// The polish keeps a move when it lowers E_ang x E_L2^polishStretchWeight (true), or only
   /// when it raises neither metric and lowers one (false). The product lets a move trade a
-  /// little of one for more of the other, which badly stretched triangles need (bench/README.md
-  /// compares both rules).
+  /// little of one for more of the other, which badly stretched triangles need.
   bool polishProduct = true;
   double polishStretchWeight = 2.0;
   /// The polish stops early when a sweep lowers that product (else: either metric) by less

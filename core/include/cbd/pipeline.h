@@ -47,7 +47,8 @@ struct CrossParameterizationOptions {
   double reverseDetour = 2.0;
   /// When the layouts kept detour more than this (`LayoutPair::detour`), `LayoutPair::warnings`
   /// says the anchors may not correspond in shape: corresponding anchors give detours well below
-  /// it, anchors swapped left for right above it (bench/README.md lists the detours). 0: never.
+  /// it, anchors swapped left for right above it (test_pipeline checks both on the bundled
+  /// pair). 0: never.
   double detourWarning = 1.8;
   /// Voronoi method: the greedy baseline's path flipping (`flipLayoutPaths`) applied to its
   /// layouts too, after they are built (the baseline always flips, as the paper grants it).
