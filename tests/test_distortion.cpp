@@ -154,8 +154,11 @@ TEST(Distortion, FlippedTrianglesAreCountedAsTheyTurnOver) {
     const DistortionMetrics d = computeDistortion(m, image, m, on);
     ASSERT_TRUE(d.status.ok());
     EXPECT_EQ(d.flipped, turned);
-    if (shift > 1.0 / 3) EXPECT_GT(turned, 0);
-    if (shift < 1.0 / 3) EXPECT_EQ(turned, 0);
+    if (shift > 1.0 / 3) {
+      EXPECT_GT(turned, 0);
+    } else {
+      EXPECT_EQ(turned, 0);
+    }
   }
 }
 

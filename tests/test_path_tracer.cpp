@@ -102,7 +102,9 @@ TEST(PathTracer, EdgeNodesFollowTheAdaptiveFormula) {
         nodes += t.edgeNodeCount(e);
       }
       EXPECT_EQ(t.nodeCount(), nodes);
-      if (o.adaptive && o.minEdgeNodes == 3) EXPECT_GT(above, 0) << "no edge long enough for more than b nodes";
+      if (o.adaptive && o.minEdgeNodes == 3) {
+        EXPECT_GT(above, 0) << "no edge long enough for more than b nodes";
+      }
     }
   }
 }
