@@ -13,7 +13,8 @@
 using namespace cbd;
 
 // One test per genus and seed: each is a full pipeline run per anchor set, and under the
-// sanitizers one genus's three seeds together come near one test's timeout.
+// sanitizers one genus's three seeds together come near one test's timeout. Instantiated as
+// LongRuns/...: a minute and more in all, so they carry the ctest label slow (tests/CMakeLists.txt).
 class StressGenus : public ::testing::TestWithParam<std::tuple<int, unsigned>> {};
 
 TEST_P(StressGenus, RandomAnchorsEitherSucceedWithAllInvariantsOrFailTyped) {
@@ -44,7 +45,7 @@ TEST_P(StressGenus, RandomAnchorsEitherSucceedWithAllInvariantsOrFailTyped) {
   EXPECT_GT(ok, runs / 3) << pair.name;
 }
 
-INSTANTIATE_TEST_SUITE_P(Stress, StressGenus, ::testing::Combine(::testing::Values(0, 1, 2), ::testing::Values(1u, 2u, 3u)),
+INSTANTIATE_TEST_SUITE_P(LongRuns, StressGenus, ::testing::Combine(::testing::Values(0, 1, 2), ::testing::Values(1u, 2u, 3u)),
                          [](const ::testing::TestParamInfo<StressGenus::ParamType>& info) {
                            return "genus" + std::to_string(std::get<0>(info.param)) + "_seed" +
                                   std::to_string(std::get<1>(info.param));

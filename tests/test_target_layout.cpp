@@ -172,7 +172,7 @@ TEST(TargetLayout, TwistedTubeDoesNotSwirl) {
   EXPECT_LT(meanDeviation, 0.35) << "target paths swirl around the tube";
 }
 
-TEST(TargetLayout, PathsPassAnchorsOnTheSideTheSourceDoes) {
+TEST(TargetLayoutOnRealMeshes, PathsPassAnchorsOnTheSideTheSourceDoes) {
   // Man -> homer, 70 anchors (the bench's pair): the man's right forearm has anchors at the
   // elbow, half-way and the wrist. Some source paths run past the half-way anchor's cluster;
   // traced on homer before that anchor had a path of its own, one passed it on the other side,

@@ -16,6 +16,25 @@ IndexedMesh tetrahedron(const Vec3& offset, double scale) {
   return m;
 }
 
+IndexedMesh cube() {
+  IndexedMesh m;
+  for (int i = 0; i < 8; ++i) m.positions.emplace_back(i & 1 ? 1 : -1, i & 2 ? 1 : -1, i & 4 ? 1 : -1);
+  // Each side as a quad counter-clockwise seen from outside, split along its diagonal.
+  const int quads[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+  for (const auto& q : quads) {
+    m.faces.push_back({q[0], q[1], q[2]});
+    m.faces.push_back({q[0], q[2], q[3]});
+  }
+  return m;
+}
+
+IndexedMesh octahedron() {
+  IndexedMesh m;
+  m.positions = {Vec3(1, 0, 0), Vec3(-1, 0, 0), Vec3(0, 1, 0), Vec3(0, -1, 0), Vec3(0, 0, 1), Vec3(0, 0, -1)};
+  m.faces = {{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4}, {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}};
+  return m;
+}
+
 IndexedMesh icosphere(int levels) {
   IndexedMesh m;
   const double t = (1.0 + std::sqrt(5.0)) / 2.0;
@@ -225,6 +244,23 @@ bool writeOff(const std::string& path, const IndexedMesh& mesh) {
   for (const auto& p : mesh.positions) out << p.x() << " " << p.y() << " " << p.z() << "\n";
   for (const auto& f : mesh.faces) out << "3 " << f[0] << " " << f[1] << " " << f[2] << "\n";
   return out.good();
+}
+
+void identityMap(const IndexedMesh& m, std::vector<FacePoint>& on, std::vector<Vec3>& image) {
+  on.assign(m.vertexCount(), FacePoint{});
+  image = m.positions;
+  for (int f = 0; f < m.faceCount(); ++f)
+    for (int k = 0; k < 3; ++k) {
+      FacePoint& p = on[m.faces[f][k]];
+      if (p.face >= 0) continue;
+      p.face = f;
+      p.bary = Vec3::Unit(k);
+    }
+}
+
+Vec3 pointOn(const IndexedMesh& m, const FacePoint& p) {
+  const auto& t = m.faces[p.face];
+  return p.bary[0] * m.positions[t[0]] + p.bary[1] * m.positions[t[1]] + p.bary[2] * m.positions[t[2]];
 }
 
 int eulerCharacteristic(const IndexedMesh& mesh) {

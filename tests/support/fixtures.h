@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "cbd/mesh.h"
+#include "cbd/parameterization.h"
 
 namespace cbd::fixtures {
 
@@ -42,6 +43,13 @@ IndexedMesh twoTetrahedraAtVertex();
 /// Two disjoint tetrahedra.
 IndexedMesh twoComponents();
 
+/// The cube [-1, 1]^3, two triangles per side, outward: sharp creases and corners.
+IndexedMesh cube();
+
+/// The regular octahedron: vertices +x, -x, +y, -y, +z, -z (in that order), every edge sqrt(2)
+/// long to the last bit.
+IndexedMesh octahedron();
+
 /// A regular tetrahedron.
 IndexedMesh tetrahedron(const Vec3& offset = Vec3::Zero(), double scale = 1.0);
 
@@ -50,6 +58,13 @@ int nearestVertex(const IndexedMesh& mesh, const Vec3& p);
 
 /// Write a mesh as OFF (for CLI tests).
 bool writeOff(const std::string& path, const IndexedMesh& mesh);
+
+/// The identity map of a mesh onto itself: every vertex on the first face using it, at its
+/// corner (unreferenced vertices on face -1); `image` the positions.
+void identityMap(const IndexedMesh& mesh, std::vector<FacePoint>& on, std::vector<Vec3>& image);
+
+/// The point of a mesh a FacePoint names.
+Vec3 pointOn(const IndexedMesh& mesh, const FacePoint& p);
 
 /// Euler characteristic V - E + F over referenced vertices.
 int eulerCharacteristic(const IndexedMesh& mesh);
