@@ -7,6 +7,8 @@
 #include <sstream>
 #include <string>
 
+#include <unistd.h>
+
 #include "cbd/files.h"
 
 using namespace cbd;
@@ -103,9 +105,33 @@ TEST(Files, SameFileSeesThroughLinksButNotThroughNames) {
   EXPECT_FALSE(sameFile((d / "mesh.off").string(), "-"));
 }
 
-TEST(Files, NotAFileReasonNamesTheFix) {
-  const fs::path d = freshDir("reason");
-  EXPECT_NE(notAFileReason((d / "nope").string()).find("no such file"), std::string::npos);
-  EXPECT_NE(notAFileReason(d.string()).find("is a folder"), std::string::npos);
-  EXPECT_NE(notAFileReason("/dev/null").find("not a regular file"), std::string::npos);
+TEST(Files, NotAFileReasonTellsMissingFolderAndDeviceApart) {
+  const fs::path dirPath = freshDir("reason2");
+  const std::string missing = (dirPath / "missing.off").string();
+  EXPECT_EQ(notAFileReason(missing), "no such file (check the path)");
+  EXPECT_EQ(notAFileReason(dirPath.string()), "is a folder, not a file (name a file in it)");
+  EXPECT_EQ(notAFileReason("/dev/null"), "is not a regular file (a device or pipe: give a file)");
+}
+
+TEST(Files, NotAFileReasonNamesAFolderThatCannotBeSearched) {
+  if (geteuid() == 0) GTEST_SKIP() << "root reads every folder: no permission error to provoke";
+  const fs::path dirPath = freshDir("locked");
+  const fs::path locked = dirPath / "locked";
+  fs::create_directories(locked);
+  std::ofstream(locked / "mesh.off") << "OFF\n";
+  fs::permissions(locked, fs::perms::none);
+  const std::string reason = notAFileReason((locked / "mesh.off").string());
+  fs::permissions(locked, fs::perms::owner_all);
+  EXPECT_EQ(reason, "cannot be accessed (check the permissions of the folders on its path)");
+}
+
+TEST(Files, WriteTargetIsAHiddenTemporaryBesideTheFileButADeviceItself) {
+  const fs::path dirPath = freshDir("target");
+  const fs::path file = dirPath / "mst.ply";
+  const std::string expected = (dirPath / ".mst.ply.tmp").string();
+  EXPECT_EQ(writeTarget(file.string()), expected);  // not there yet
+  std::ofstream(file) << "x";
+  EXPECT_EQ(writeTarget(file.string()), expected);  // a regular file is replaced by a rename
+  EXPECT_EQ(writeTarget("/dev/null"), "/dev/null");  // a device is written in place
+  EXPECT_EQ(writeTarget("out.json"), ".out.json.tmp");  // a bare name stays in the working folder
 }

@@ -1,12 +1,8 @@
 // Typed errors (status.h): every code has a stable name, a description and a distinct, stable exit
-// code; the helpers that name why a path cannot be read and where a writer puts its temporary.
+// code (the file-system helpers are tested in test_files.cpp).
 #include <gtest/gtest.h>
 
-#include <unistd.h>
-
 #include <cctype>
-#include <filesystem>
-#include <fstream>
 #include <map>
 #include <set>
 #include <string>
@@ -14,24 +10,6 @@
 #include "cbd/status.h"
 
 using namespace cbd;
-namespace fs = std::filesystem;
-
-namespace {
-
-/// A fresh empty folder for one test, removed afterwards.
-struct TempDir {
-  fs::path path;
-  explicit TempDir(const std::string& name) : path(fs::temp_directory_path() / ("cbd_test_status_" + name)) {
-    fs::remove_all(path);
-    fs::create_directories(path);
-  }
-  ~TempDir() {
-    std::error_code ec;
-    fs::remove_all(path, ec);
-  }
-};
-
-}  // namespace
 
 TEST(Status, EveryCodeIsListedOnceInEnumOrder) {
   int count = 0;
@@ -109,35 +87,4 @@ TEST(Status, CountedUsesTheSingularForOneOnly) {
   EXPECT_EQ(counted(3, "face", "faces"), "3 faces");
   EXPECT_EQ(counted(-1, "face", "faces"), "-1 faces");
   EXPECT_EQ(counted(10000000000LL, "face", "faces"), "10000000000 faces");
-}
-
-TEST(Status, NotAFileReasonTellsMissingFolderAndDeviceApart) {
-  TempDir dir("reason");
-  const std::string missing = (dir.path / "missing.off").string();
-  EXPECT_EQ(notAFileReason(missing), "no such file (check the path)");
-  EXPECT_EQ(notAFileReason(dir.path.string()), "is a folder, not a file (name a file in it)");
-  EXPECT_EQ(notAFileReason("/dev/null"), "is not a regular file (a device or pipe: give a file)");
-}
-
-TEST(Status, NotAFileReasonNamesAFolderThatCannotBeSearched) {
-  if (geteuid() == 0) GTEST_SKIP() << "root reads every folder: no permission error to provoke";
-  TempDir dir("locked");
-  const fs::path locked = dir.path / "locked";
-  fs::create_directories(locked);
-  std::ofstream(locked / "mesh.off") << "OFF\n";
-  fs::permissions(locked, fs::perms::none);
-  const std::string reason = notAFileReason((locked / "mesh.off").string());
-  fs::permissions(locked, fs::perms::owner_all);
-  EXPECT_EQ(reason, "cannot be accessed (check the permissions of the folders on its path)");
-}
-
-TEST(Status, WriteTargetIsAHiddenTemporaryBesideTheFileButADeviceItself) {
-  TempDir dir("target");
-  const fs::path file = dir.path / "mst.ply";
-  const std::string expected = (dir.path / ".mst.ply.tmp").string();
-  EXPECT_EQ(writeTarget(file.string()), expected);  // not there yet
-  std::ofstream(file) << "x";
-  EXPECT_EQ(writeTarget(file.string()), expected);  // a regular file is replaced by a rename
-  EXPECT_EQ(writeTarget("/dev/null"), "/dev/null");  // a device is written in place
-  EXPECT_EQ(writeTarget("out.json"), ".out.json.tmp");  // a bare name stays in the working folder
 }
