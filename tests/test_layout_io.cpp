@@ -118,6 +118,12 @@ TEST(LayoutIO, ALayoutWithoutClustersWritesNoClusterFile) {
   EXPECT_TRUE(fs::exists(tmp.path / kLayoutFile));
   EXPECT_TRUE(fs::exists(tmp.path / kPathsFile));
   EXPECT_FALSE(fs::exists(tmp.path / kClustersFile));
+  // Over an earlier layout with clusters, its clusters.ply goes too: one layout per folder.
+  const Layout withClusters = sphereLayout();
+  ASSERT_TRUE(writeLayout(withClusters, tmp.path.string()).ok());
+  ASSERT_TRUE(fs::exists(tmp.path / kClustersFile));
+  ASSERT_TRUE(writeLayout(L, tmp.path.string()).ok());
+  EXPECT_FALSE(fs::exists(tmp.path / kClustersFile));
 }
 
 TEST(LayoutIO, AFolderThatCannotBeMadeOrWrittenIsAnOutputError) {

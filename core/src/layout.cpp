@@ -438,12 +438,20 @@ namespace {
 std::vector<int> labelOfInputFaces(const RefinedMesh& m, const std::vector<int>& label) {
   std::vector<int> out(m.inputFaceCount(), -1);
   if (label.empty()) return out;
-  std::vector<double> best(m.inputFaceCount(), -1.0);
+  // The area of each label within each input face (a face crossed by paths is split among a few).
+  std::vector<std::vector<std::pair<int, double>>> area(m.inputFaceCount());
   for (int f = 0; f < m.faceCount(); ++f) {
     const auto v = m.faceVertices(f);
     const double a = (m.position(v[1]) - m.position(v[0])).cross(m.position(v[2]) - m.position(v[0])).norm();
-    const int in = m.inputFace(f);
-    if (a > best[in]) best[in] = a, out[in] = label[f];
+    auto& parts = area[m.inputFace(f)];
+    auto it = std::find_if(parts.begin(), parts.end(), [&](const auto& x) { return x.first == label[f]; });
+    if (it == parts.end()) parts.emplace_back(label[f], a);
+    else it->second += a;
+  }
+  for (size_t in = 0; in < area.size(); ++in) {
+    double best = -1.0;
+    for (const auto& [l, a] : area[in])
+      if (a > best) best = a, out[in] = l;
   }
   return out;
 }
@@ -496,7 +504,14 @@ LayoutCheck validateLayout(const Layout& layout, int expectedEuler) {
                 " = " + std::to_string(c.eulerCharacteristic) + ", the surface has " + std::to_string(expectedEuler));
   if (static_cast<int>(layout.edgePath.size()) != m.edgeCount()) return fail("edgePath size");
   std::vector<int> anchorOf(m.vertexCount(), -1);
-  for (int i = 0; i < V; ++i) anchorOf[layout.anchorVertices[i]] = i;
+  for (int i = 0; i < V; ++i) {
+    const int v = layout.anchorVertices[i];
+    if (v < 0 || v >= m.vertexCount()) return fail("anchor " + std::to_string(i) + " is no vertex of the mesh");
+    if (anchorOf[v] >= 0) return fail("anchors " + std::to_string(anchorOf[v]) + " and " + std::to_string(i) + " share a vertex");
+    anchorOf[v] = i;
+  }
+  for (int e = 0; e < m.edgeCount(); ++e)
+    if (layout.edgePath[e] < -1 || layout.edgePath[e] >= E) return fail("mesh edge " + std::to_string(e) + " names no path");
   // Paths: simple edge chains between their anchors, sharing no vertex but end anchors.
   std::vector<int> owner(m.vertexCount(), -1);
   std::vector<int> edgeCount(E, 0);
@@ -505,6 +520,7 @@ LayoutCheck validateLayout(const Layout& layout, int expectedEuler) {
   for (int p = 0; p < E; ++p) {
     const LayoutEdge& le = layout.edges[p];
     const std::string name = "edge " + std::to_string(p) + " (" + std::to_string(le.a) + "-" + std::to_string(le.b) + ")";
+    if (le.a < 0 || le.a >= V || le.b < 0 || le.b >= V) return fail(name + " ends at no anchor");
     if (le.a == le.b) return fail(name + " is a loop");
     if (le.vertices.size() < 2 || le.vertices.front() != layout.anchorVertices[le.a] ||
         le.vertices.back() != layout.anchorVertices[le.b])
@@ -562,11 +578,21 @@ LayoutCheck validateLayout(const Layout& layout, int expectedEuler) {
         same = same && P.corners[(k + shift) % 3] == loop.corners[k] && P.edges[(k + shift) % 3] == loop.sides[k];
     }
     if (!same) return fail("patch " + std::to_string(patchOfRegion[i]) + " does not match the region its faces form");
+    for (int k = 0; k < 3; ++k)
+      if (P.forward[k] != (layout.edges[P.edges[k]].a == P.corners[k]))
+        return fail("patch " + std::to_string(patchOfRegion[i]) + " has side " + std::to_string(k) + " in the wrong direction");
     if (P.faces != rm.regions[i].faces) return fail("patch " + std::to_string(patchOfRegion[i]) + " miscounts its faces");
   }
   // Rotation system: at each patch corner, the incoming and outgoing sides are consecutive
   // (outgoing, then incoming, counter-clockwise) in the anchor's rotation.
   if (static_cast<int>(layout.rotation.size()) != V) return fail("rotation system size");
+  // Each anchor's rotation lists exactly the path ends there, each once.
+  std::vector<int> ends(V, 0);
+  for (const LayoutEdge& le : layout.edges) ++ends[le.a], ++ends[le.b];
+  for (int a = 0; a < V; ++a)
+    if (static_cast<int>(layout.rotation[a].size()) != ends[a])
+      return fail("rotation at anchor " + std::to_string(a) + " lists " + std::to_string(layout.rotation[a].size()) +
+                  " path ends, the paths have " + std::to_string(ends[a]));
   for (const Patch& p : layout.patches) {
     for (int k = 0; k < 3; ++k) {
       const int a = p.corners[k];

@@ -49,6 +49,12 @@ Status writeLayout(const Layout& layout, const std::string& dir) {
   if (!layout.faceCluster.empty()) {
     colourFaces(m, layout.faceCluster);
     if (Status s = savePly((fs::path(dir) / kClustersFile).string(), m, faceOpt); !s) return s;
+  } else {
+    // A clusters.ply of an earlier run (another method) would read as this layout's clusters.
+    std::error_code ec;
+    const fs::path stale = fs::path(dir) / kClustersFile;
+    if (fs::is_regular_file(stale, ec) && !fs::remove(stale, ec))
+      return Status::error(ErrorCode::OutputError, "cannot remove the earlier run's '" + stale.string() + "'");
   }
   Mesh paths;
   for (size_t p = 0; p < layout.edges.size(); ++p) {

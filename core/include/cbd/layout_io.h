@@ -24,8 +24,9 @@ std::array<unsigned char, 3> paletteColor(int k);
 
 /// Write `dir/layout.ply` (refined mesh, per-face colour by patch, face quality = patch index),
 /// `dir/paths.ply` (every layout edge as a polyline; vertex quality = layout edge index) and,
-/// when `layout.faceCluster` is not empty, `dir/clusters.ply` (per-face colour by cluster). The folder
-/// is created when missing. Errors: OutputError.
+/// when `layout.faceCluster` is not empty, `dir/clusters.ply` (per-face colour by cluster; else an
+/// earlier run's clusters.ply there is removed, so the folder holds one layout). The folder is
+/// created when missing. Errors: OutputError.
 Status writeLayout(const Layout& layout, const std::string& dir);
 
 }  // namespace cbd

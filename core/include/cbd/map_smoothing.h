@@ -4,9 +4,11 @@
 /// Sheffer 2004's smoothing): every source vertex that is not an anchor is moved, in the chart
 /// of its patch (unfolded across the path it lies on when it lies on one), towards the
 /// source-weighted average of its neighbours' images on the target, projected back onto the
-/// target through the target's patch parameterization. A move is rejected when it would flip
-/// one of the vertex's triangles in M_st or leave the chart, so the map stays bijective;
-/// flipped triangles can only become fewer.
+/// target through the target's patch parameterization. A move is rejected when it would raise
+/// the number of the vertex's triangles in M_st that face against the target (a collapsed
+/// triangle counts as one), or leave the chart: so flipped triangles can only become fewer (a
+/// move may trade one of the vertex's flips for another). The metrics, which count collapsed
+/// triangles as degenerate rather than flipped, are measured after this stage.
 
 #include "cbd/layout.h"
 #include "cbd/parameterization.h"
