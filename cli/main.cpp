@@ -2,7 +2,6 @@
 // (cbd/report.h). Every failure is one line on stderr and a distinct exit code (cbd exit-codes).
 
 #include <algorithm>
-#include <atomic>
 #include <cctype>
 #include <csignal>
 #include <cstdio>

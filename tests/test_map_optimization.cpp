@@ -14,21 +14,6 @@ namespace fx = cbd::fixtures;
 
 namespace {
 
-/// An icosphere (3 levels) with `count` farthest-point anchors onto a finer one (4 levels) moved
-/// by `warp`, the anchors at the warped nearest vertices.
-struct Pair {
-  IndexedMesh source, target;
-  std::vector<int> sourceAnchors, targetAnchors;
-};
-template <typename Warp>
-Pair warpedSpheres(int count, Warp warp) {
-  Pair p{fx::icosphere(3), fx::icosphere(4), {}, {}};
-  p.sourceAnchors = farthestPointSampling(p.source, count);
-  for (int v : p.sourceAnchors) p.targetAnchors.push_back(fx::nearestVertex(p.target, p.source.positions[v]));
-  for (auto& x : p.target.positions) x = warp(x);
-  return p;
-}
-
 /// A smooth warp: turned, scaled by 1.5 and bumped by 3 % along the normal.
 Vec3 bumpy(const Vec3& x) {
   const Eigen::Matrix3d R = Eigen::AngleAxisd(0.7, Vec3(1, 2, 3).normalized()).toRotationMatrix();
@@ -36,7 +21,7 @@ Vec3 bumpy(const Vec3& x) {
   return 1.5 * bump * (R * x);
 }
 
-CrossParameterizationResult optimized(const Pair& p) {
+CrossParameterizationResult optimized(const fx::AnchoredPair& p) {
   CrossParameterizationOptions o;
   o.mapStage = MapStage::Optimize;
   return crossParameterize(p.source, p.sourceAnchors, p.target, p.targetAnchors, 2, o);
@@ -45,7 +30,7 @@ CrossParameterizationResult optimized(const Pair& p) {
 }  // namespace
 
 TEST(MapOptimization, IsInjectiveInTheDomainAndLowersTheEnergy) {
-  const Pair p = warpedSpheres(20, bumpy);
+  const fx::AnchoredPair p = fx::anchoredSpheres(20, bumpy);
   const CrossParameterizationResult r = optimized(p);
   ASSERT_TRUE(r.status.ok()) << r.status.message;
   EXPECT_TRUE(r.optimization.injective);
@@ -60,7 +45,7 @@ TEST(MapOptimization, IsInjectiveInTheDomainAndLowersTheEnergy) {
 }
 
 TEST(MapOptimization, MapsTargetToSourceByTheExactInverse) {
-  const Pair p = warpedSpheres(20, bumpy);
+  const fx::AnchoredPair p = fx::anchoredSpheres(20, bumpy);
   const CrossParameterizationResult r = optimized(p);
   ASSERT_TRUE(r.status.ok()) << r.status.message;
   const BaseDomain D(r.layouts.source);
@@ -87,7 +72,7 @@ TEST(MapOptimization, MapsTargetToSourceByTheExactInverse) {
 }
 
 TEST(MapOptimization, RecoversAKnownSmoothCorrespondence) {
-  const Pair p = warpedSpheres(24, bumpy);
+  const fx::AnchoredPair p = fx::anchoredSpheres(24, bumpy);
   const CrossParameterizationResult r = optimized(p);
   ASSERT_TRUE(r.status.ok()) << r.status.message;
   // The warp of each source vertex lies on the target (up to its facets): the map should find it.
@@ -97,7 +82,7 @@ TEST(MapOptimization, RecoversAKnownSmoothCorrespondence) {
 }
 
 TEST(MapOptimization, CancelsWhenTheCallbackSaysStop) {
-  const Pair p = warpedSpheres(12, bumpy);
+  const fx::AnchoredPair p = fx::anchoredSpheres(12, bumpy);
   CrossParameterizationOptions o;
   o.mapStage = MapStage::Optimize;
   int calls = 0;

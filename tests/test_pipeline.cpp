@@ -17,21 +17,6 @@ using namespace cbd;
 namespace fx = cbd::fixtures;
 
 namespace {
-/// An icosphere (3 levels) with `count` farthest-point anchors, and a finer one (4 levels) with
-/// the anchors at the nearest vertices, then moved by `deform`.
-struct AnchoredPair {
-  IndexedMesh source, target;
-  std::vector<int> sourceAnchors, targetAnchors;
-};
-template <typename Deform>
-AnchoredPair anchoredSpheres(int count, Deform deform) {
-  AnchoredPair p{fx::icosphere(3), fx::icosphere(4), {}, {}};
-  p.sourceAnchors = farthestPointSampling(p.source, count);
-  for (int v : p.sourceAnchors) p.targetAnchors.push_back(fx::nearestVertex(p.target, p.source.positions[v]));
-  for (auto& x : p.target.positions) x = deform(x);
-  return p;
-}
-
 /// The bundled pair, cow -> bull with its anchors, loaded and checked (`in.report.status`);
 /// `present` is false when scripts/setup.sh has not unpacked the meshes.
 struct BundledPair {
@@ -74,7 +59,7 @@ TEST(LengthDetour, OneWhenEveryPathIsScaledAlike) {
 }
 
 TEST(Pipeline, SphereToEllipsoidKeepsTheSourceDiagram) {
-  const AnchoredPair e = anchoredSpheres(20, [](const Vec3& x) { return Vec3(1.6 * x.x(), x.y(), 0.8 * x.z()); });
+  const fx::AnchoredPair e = fx::anchoredSpheres(20, [](const Vec3& x) { return Vec3(1.6 * x.x(), x.y(), 0.8 * x.z()); });
   const LayoutPair p = buildLayouts(e.source, e.sourceAnchors, e.target, e.targetAnchors, 2, {});
   ASSERT_TRUE(p.status.ok()) << p.status.message;
   EXPECT_FALSE(p.triedReverse) << "detour " << p.detour;
@@ -190,7 +175,7 @@ TEST(Pipeline, PathFlippingShortensTheVoronoiLayoutsAndKeepsThemValid) {
   // replaces a path by the other diagonal of its two patches when that is shorter on both
   // surfaces together, so the layouts stay valid and isomorphic, keep their edge count and
   // anchors, and get strictly shorter with every flip.
-  const AnchoredPair e = anchoredSpheres(20, [](const Vec3& x) { return Vec3(1.6 * x.x(), x.y(), 0.8 * x.z()); });
+  const fx::AnchoredPair e = fx::anchoredSpheres(20, [](const Vec3& x) { return Vec3(1.6 * x.x(), x.y(), 0.8 * x.z()); });
   const LayoutPair p = buildLayouts(e.source, e.sourceAnchors, e.target, e.targetAnchors, 2, {});
   ASSERT_TRUE(p.status.ok()) << p.status.message;
   const double areaS = surfaceArea(e.source), areaT = surfaceArea(e.target);
@@ -283,7 +268,7 @@ TEST(Pipeline, AScalingByAPowerOfTwoChangesNothingButTheScale) {
   // images scaled by 8, for both methods. (A scaling by 10 rounds every coordinate, which can
   // break ties of the searches differently.)
   // A twisted, bent ellipsoid: the composed map has flipped triangles to untangle.
-  const AnchoredPair pair = anchoredSpheres(8, [](const Vec3& p) {
+  const fx::AnchoredPair pair = fx::anchoredSpheres(8, [](const Vec3& p) {
     const double a = 2.5 * p.x(), c = std::cos(a), sn = std::sin(a);
     return Vec3(2.0 * p.x() + 0.5 * p.y() * p.y(), c * p.y() - sn * 0.6 * p.z(), sn * p.y() + c * 0.6 * p.z());
   });

@@ -1,5 +1,7 @@
 #include "support/fixtures.h"
 
+#include "cbd/anchor_sampling.h"
+
 #include <cmath>
 #include <fstream>
 #include <map>
@@ -280,6 +282,14 @@ std::vector<LayoutCase> genusZeroToTwoLayouts() {
   cases.push_back({torus(2.0, 0.7, 48, 20), 9});
   cases.push_back({holedPlate(2, 4, 20), 16});
   return cases;
+}
+
+AnchoredPair anchoredSpheres(int count, const std::function<Vec3(const Vec3&)>& deform) {
+  AnchoredPair p{icosphere(3), icosphere(4), {}, {}};
+  p.sourceAnchors = farthestPointSampling(p.source, count);
+  for (int v : p.sourceAnchors) p.targetAnchors.push_back(nearestVertex(p.target, p.source.positions[v]));
+  for (auto& x : p.target.positions) x = deform(x);
+  return p;
 }
 
 }  // namespace cbd::fixtures

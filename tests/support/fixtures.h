@@ -2,6 +2,7 @@
 // Procedural meshes for the tests: closed surfaces of genus 0, 1, 2 and the broken inputs the
 // validator must recognise. All are built from formulas, nothing is read from disk.
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -68,6 +69,14 @@ Vec3 pointOn(const IndexedMesh& mesh, const FacePoint& p);
 
 /// Euler characteristic V - E + F over referenced vertices.
 int eulerCharacteristic(const IndexedMesh& mesh);
+
+/// An icosphere (3 levels) with `count` farthest-point anchors and a finer one (4 levels) with the
+/// anchors at the nearest vertices, then moved by `deform`: a pair with a known correspondence.
+struct AnchoredPair {
+  IndexedMesh source, target;
+  std::vector<int> sourceAnchors, targetAnchors;
+};
+AnchoredPair anchoredSpheres(int count, const std::function<Vec3(const Vec3&)>& deform);
 
 /// A surface and how many anchors to lay out on it.
 struct LayoutCase {
