@@ -233,7 +233,7 @@ int runLayout(const RunArgs& a) {
   }
   warn(job.paired() ? cbd::inputWarnings(r.input.report) : r.single.report.warnings);
   if (r.status) {
-    if (job.paired()) warn(cbd::layoutWarnings(r.layouts));
+    warn(cbd::layoutWarnings(r.layouts));
     print(cbd::layoutJobLines(job, r));
   }
   return finish(r.status, cbd::layoutJobJson(job, r), reportPathFor(r.status, a.jsonPath));

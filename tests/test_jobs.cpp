@@ -16,6 +16,7 @@
 #include "cbd/layout_io.h"
 #include "cbd/map_io.h"
 #include "cbd/mesh.h"
+#include "cbd/report.h"
 #include "support/fixtures.h"
 
 using namespace cbd;
@@ -191,6 +192,46 @@ TEST(LayoutJob, OneSurfaceOrAPairEachWritesItsLayouts) {
   EXPECT_EQ(b.layouts.source.edges.size(), 18u);
   EXPECT_EQ(b.layouts.target.patches.size(), 12u);
   for (const std::string& f : outputFiles(paired)) EXPECT_TRUE(fs::is_regular_file(f)) << f;
+}
+
+TEST(LayoutJobOnRealMeshes, OneSurfaceWithATunnelGetsAddedAnchorsAndSaysSo) {
+  // femur.off (genus 2) with 8 sampled anchors, as a user runs `cbd sample-anchors` and then
+  // `cbd layout`: its tunnels are small next to the anchor spacing, and the layout completes
+  // only with anchors added, which the report lists.
+  const std::string femur = std::string(CBD_CGAL_MESHES) + "/femur.off";
+  if (!fs::exists(femur)) GTEST_SKIP() << "scripts/setup.sh unpacks " << CBD_CGAL_MESHES;
+  const fs::path dir = fs::path(testing::TempDir()) / "cbd_jobs_femur";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  SampleJob sample;
+  sample.mesh = femur;
+  sample.count = 8;
+  sample.out = (dir / "femur.pp").string();
+  SampleJobResult sampled;
+  runSampleJob(sample, sampled);
+  ASSERT_TRUE(sampled.status) << sampled.status.message;
+  LayoutJob job;
+  job.files = {femur, "", sample.out, ""};
+  job.outDir = (dir / "layout").string();
+  LayoutJobResult r;
+  runLayoutJob(job, r);
+  ASSERT_TRUE(r.status) << r.status.message;
+  const Layout& L = r.singleLayout.layout;
+  ASSERT_FALSE(r.layouts.addedAnchors.empty());
+  EXPECT_EQ(L.anchorCount(), 8 + static_cast<int>(r.layouts.addedAnchors.size()));
+  // A triangulation of the genus-2 surface: V - E + F = -2 and 3 F = 2 E.
+  EXPECT_EQ(L.anchorCount() - static_cast<int>(L.edges.size()) + static_cast<int>(L.patches.size()), -2);
+  EXPECT_EQ(3 * L.patches.size(), 2 * L.edges.size());
+  for (const std::string& f : outputFiles(job)) EXPECT_TRUE(fs::is_regular_file(f)) << f;
+  const Json j = layoutJobJson(job, r);
+  ASSERT_EQ(j["layout"]["added_anchors"].size(), r.layouts.addedAnchors.size());
+  EXPECT_EQ(j["layout"]["added_anchors"][0]["name"], "added1");
+  EXPECT_EQ(j["layout"]["added_anchors"][0]["vertex"], r.layouts.addedAnchors[0].first);
+  ASSERT_EQ(j["layout"]["warnings"].size(), 1u);
+  const std::vector<std::string> lines = layoutJobLines(job, r);
+  EXPECT_TRUE(std::any_of(lines.begin(), lines.end(), [](const std::string& l) {
+    return l.find("added where a handle is smaller") != std::string::npos;
+  }));
 }
 
 TEST(LayoutJob, TheGreedyMethodNeedsATarget) {

@@ -76,15 +76,19 @@ void runLayoutJob(const LayoutJob& job, LayoutJobResult& out, const Progress& pr
     if (!out.single.status) return fail(out.single.status);
     if (Status s = prepareOutputs(folder, job.outDir, job.reportPath); !s) return fail(s);
     out.computed = true;
-    SourceLayoutOptions opt;
-    opt.edgeNodes = job.pipeline.edgeNodes;
-    for (const SnappedAnchor& a : out.single.anchors) opt.anchorNames.push_back(a.name);
-    out.singleLayout = buildSourceLayout(out.single.indexed, vertices(out.single.anchors), opt, progress.part(0.05, 0.95));
-    out.times.voronoi = out.singleLayout.voronoiSeconds;
-    out.times.sourceLayout = out.singleLayout.layoutSeconds;
-    if (!out.singleLayout.status) return fail(out.singleLayout.status);
-    if (const LayoutCheck c = validateLayout(out.singleLayout.layout, out.single.report.eulerCharacteristic); !c.status)
-      return fail(c.status);
+    // The mesh paired with itself: buildLayouts then builds one layout (and adds anchor pairs
+    // where it gets stuck, each pair one vertex).
+    CrossParameterizationOptions o = job.pipeline;
+    o.anchorNames.clear();
+    for (const SnappedAnchor& a : out.single.anchors) o.anchorNames.push_back(a.name);
+    const std::vector<int> anchors = vertices(out.single.anchors);
+    out.layouts = buildLayouts(out.single.indexed, anchors, out.single.indexed, anchors,
+                               out.single.report.eulerCharacteristic, o, progress.part(0.05, 0.95));
+    out.times = out.layouts.times;
+    out.singleLayout = std::move(out.layouts.sourceStats);
+    if (!out.layouts.status) return fail(out.layouts.status);
+    out.singleLayout.layout = std::move(out.layouts.source);
+    out.layouts.target = Layout{};
     if (!progress.report(0.95, "writing the layout")) return fail(cancelledWhile("building the layout"));
     if (Status s = writeLayout(out.singleLayout.layout, job.outDir); !s) return fail(s);
   } else {

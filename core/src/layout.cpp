@@ -1,6 +1,9 @@
 #include "cbd/layout.h"
 
 #include <algorithm>
+#include <functional>
+#include <limits>
+#include <queue>
 #include <map>
 #include <set>
 #include <cstdint>
@@ -460,6 +463,74 @@ std::vector<int> labelOfInputFaces(const RefinedMesh& m, const std::vector<int>&
 std::vector<int> inputFacePatch(const Layout& layout) { return labelOfInputFaces(layout.mesh, layout.facePatch); }
 
 std::vector<int> inputFaceCluster(const Layout& layout) { return labelOfInputFaces(layout.mesh, layout.faceCluster); }
+
+int RegionDistances::deepest() const {
+  int best = -1;
+  for (size_t k = 0; k < vertices.size(); ++k)
+    if (best < 0 || toBoundary[k] > toBoundary[best]) best = static_cast<int>(k);
+  return best;
+}
+
+bool regionDistances(const Layout& layout, const RegionSignature& region, RegionDistances& out) {
+  out = RegionDistances{};
+  const RefinedMesh& m = layout.mesh;
+  std::vector<int> anchorOf(m.vertexCount(), -1);
+  for (int i = 0; i < layout.anchorCount(); ++i) anchorOf[layout.anchorVertices[i]] = i;
+  const RegionMap rm = analyzeRegions(m, layout.edgePath, anchorOf);
+  RegionScratch scratch;
+  std::vector<std::vector<int>> faces;
+  for (size_t i = 0; i < rm.regions.size(); ++i) {
+    const auto sig = regionSignaturesAt(m, layout.edgePath, anchorOf, layout.edges, {rm.firstFace[i]}, scratch, &faces);
+    if (sig.size() != 1 || !(sig[0] == region)) continue;
+    std::vector<char> inside(m.vertexCount(), 0);
+    std::vector<int> boundary;
+    for (int f : faces[0])
+      for (int v : m.faceVertices(f)) {
+        if (inside[v]) continue;
+        inside[v] = 1;
+        if (anchorOf[v] >= 0 || onPath(m, layout.edgePath, v)) boundary.push_back(v);
+      }
+    for (const auto& loop : region.loops)
+      for (const auto& [edge, direction] : loop)
+        if (std::find(out.sides.begin(), out.sides.end(), edge) == out.sides.end()) out.sides.push_back(edge);
+    // Dijkstra from `sources` over the region's edges (a boundary vertex is reached, never left
+    // but as a source, so no distance runs through another region).
+    constexpr double inf = std::numeric_limits<double>::infinity();
+    auto distances = [&](const std::vector<int>& sources) {
+      std::vector<double> dist(m.vertexCount(), inf);
+      using Item = std::pair<double, int>;
+      std::priority_queue<Item, std::vector<Item>, std::greater<Item>> queue;
+      for (int v : sources) dist[v] = 0, queue.push({0.0, v});
+      while (!queue.empty()) {
+        const auto [d, v] = queue.top();
+        queue.pop();
+        if (d > dist[v] || (d > 0 && (anchorOf[v] >= 0 || onPath(m, layout.edgePath, v)))) continue;
+        const int start = m.outgoing(v);
+        int h = start;
+        do {
+          const int w = m.to(h);
+          const double dw = d + m.edgeLength(RefinedMesh::edgeOf(h));
+          if (inside[w] && dw < dist[w]) dist[w] = dw, queue.push({dw, w});
+          h = m.rotateCCW(h);
+        } while (h != start);
+      }
+      return dist;
+    };
+    const std::vector<double> toBoundary = distances(boundary);
+    std::vector<std::vector<double>> toSide;
+    for (int e : out.sides) toSide.push_back(distances(layout.edges[e].vertices));
+    for (int v = 0; v < m.inputVertexCount(); ++v) {
+      if (!inside[v] || !(toBoundary[v] > 0) || toBoundary[v] == inf) continue;
+      out.vertices.push_back(v);
+      out.toBoundary.push_back(toBoundary[v]);
+      std::vector<double> d;
+      for (const auto& side : toSide) d.push_back(side[v]);
+      out.toSide.push_back(std::move(d));
+    }
+    return true;
+  }
+  return false;
+}
 
 Status assemblePatches(Layout& layout) {
   const RefinedMesh& m = layout.mesh;

@@ -14,6 +14,8 @@ double seconds(std::chrono::steady_clock::time_point t0) {
 
 const char* layoutMethodName(LayoutMethod m) { return m == LayoutMethod::Voronoi ? "voronoi" : "greedy"; }
 
+std::string addedAnchorName(int k) { return "added" + std::to_string(k + 1); }
+
 Status validate(const CrossParameterizationOptions& o) {
   auto outside = [](const char* what, IntRange r, int v) {
     return Status::error(ErrorCode::InvalidArgument, std::string(what) + " must be in " + std::to_string(r.lo) + ".." +
@@ -55,10 +57,46 @@ LayoutPair voronoiLayouts(const IndexedMesh& from, const std::vector<int>& fa, c
   SourceLayoutOptions so;
   so.edgeNodes = options.edgeNodes;
   so.anchorNames = options.anchorNames;
-  p.sourceStats = buildSourceLayout(from, fa, so, progress.part(0.0, ontoIsFrom ? 1.0 : 0.5));
-  p.times.voronoi = p.sourceStats.voronoiSeconds;
-  p.times.sourceLayout = p.sourceStats.layoutSeconds;
-  if (!p.sourceStats.status) return p.status = p.sourceStats.status, p;
+  TargetLayoutOptions to;
+  to.edgeNodes = options.edgeNodes;
+  to.anchorNames = options.anchorNames;
+  // Where the source layout gets stuck, an anchor pair is added there (anchor_pairs.h) and both
+  // layouts are built again with it, up to the cap.
+  const int genus = (2 - euler) / 2;
+  const int maxPairs = options.maxAnchorPairs >= 0 ? options.maxAnchorPairs : 4 * genus + 2;
+  std::vector<int> sourceAnchors = fa, targetAnchors = ta;
+  for (;;) {
+    p.sourceStats = buildSourceLayout(from, sourceAnchors, so, progress.part(0.0, ontoIsFrom ? 1.0 : 0.5));
+    p.times.voronoi += p.sourceStats.voronoiSeconds;
+    p.times.sourceLayout += p.sourceStats.layoutSeconds;
+    if (p.sourceStats.status || !p.sourceStats.stuck || static_cast<int>(p.addedAnchors.size()) >= maxPairs) break;
+    AnchorPairResult pair;
+    if (ontoIsFrom) {
+      pair.sourceVertex = pair.targetVertex = p.sourceStats.stuckVertex;
+      if (pair.sourceVertex < 0) break;
+    } else {
+      AnchorPairOptions ao;
+      ao.target = to;
+      const auto t0 = std::chrono::steady_clock::now();
+      pair = placeAnchorPair(p.sourceStats, onto, targetAnchors, ao, progress.quiet());
+      p.times.targetLayout += seconds(t0);
+      if (pair.status.code == ErrorCode::Cancelled) return p.status = pair.status, p;
+      if (!pair.status) return p.status = pair.status, p;
+    }
+    p.addedAnchors.push_back({pair.sourceVertex, pair.targetVertex});
+    sourceAnchors.push_back(pair.sourceVertex);
+    targetAnchors.push_back(pair.targetVertex);
+    if (!options.anchorNames.empty()) {
+      so.anchorNames.push_back(addedAnchorName(static_cast<int>(p.addedAnchors.size()) - 1));
+      to.anchorNames = so.anchorNames;
+    }
+  }
+  if (!p.sourceStats.status) {
+    p.status = p.sourceStats.status;
+    if (!p.addedAnchors.empty())
+      p.status.message += " (after adding " + std::to_string(p.addedAnchors.size()) + " anchor pairs, the most allowed)";
+    return p;
+  }
   if (const LayoutCheck c = validateLayout(p.sourceStats.layout, euler); !c.status) return p.status = c.status, p;
   if (ontoIsFrom) {
     p.source = std::move(p.sourceStats.layout);
@@ -66,12 +104,9 @@ LayoutPair voronoiLayouts(const IndexedMesh& from, const std::vector<int>& fa, c
     p.sameSurface = true;
     return p;
   }
-  TargetLayoutOptions to;
-  to.edgeNodes = options.edgeNodes;
-  to.anchorNames = options.anchorNames;
-  p.targetStats = buildTargetLayout(p.sourceStats.layout, onto, ta, to, progress.part(0.5, 1.0));
+  p.targetStats = buildTargetLayout(p.sourceStats.layout, onto, targetAnchors, to, progress.part(0.5, 1.0));
   p.times.voronoi += p.targetStats.voronoiSeconds;
-  p.times.targetLayout = p.targetStats.layoutSeconds;
+  p.times.targetLayout += p.targetStats.layoutSeconds;
   if (!p.targetStats.status) return p.status = p.targetStats.status, p;
   p.source = std::move(p.sourceStats.layout);
   p.target = std::move(p.targetStats.layout);
@@ -119,6 +154,7 @@ LayoutPair buildLayouts(const IndexedMesh& source, const std::vector<int>& sa, c
         const double forwardDetour = p.status ? p.detour : 0.0;
         p = std::move(q);
         std::swap(p.source, p.target);
+        for (auto& [a, b] : p.addedAnchors) std::swap(a, b);
         p.reversed = true;
         p.reverseDetour = forwardDetour;
         p.detour = reverse;
@@ -149,6 +185,18 @@ LayoutPair buildLayouts(const IndexedMesh& source, const std::vector<int>& sa, c
   if (p.method == LayoutMethod::Voronoi) unchecked = p.sameSurface ? nullptr : p.reversed ? &p.source : &p.target;
   if (unchecked)
     if (const LayoutCheck c = validateLayout(*unchecked, euler); !c.status) return p.status = c.status, p;
+  if (!p.addedAnchors.empty()) {
+    std::string list;
+    for (size_t k = 0; k < p.addedAnchors.size(); ++k)
+      list += (k ? ", " : "") + addedAnchorName(static_cast<int>(k)) + " at vertex " +
+              std::to_string(p.addedAnchors[k].first) +
+              (p.sameSurface ? std::string() : " / " + std::to_string(p.addedAnchors[k].second));
+    p.warnings.push_back(std::to_string(p.addedAnchors.size()) + (p.sameSurface ? " anchor" : " anchor pair") +
+                         (p.addedAnchors.size() == 1 ? " was" : "s were") +
+                         " added where no path could split a region (a handle smaller than the anchor spacing): " +
+                         list + (p.sameSurface ? "" : " (source / target)") +
+                         "; they stay fixed in the map: give anchors there to choose their places");
+  }
   if (options.detourWarning > 0 && p.detour > options.detourWarning && !p.sameSurface) {
     char d[32];
     std::snprintf(d, sizeof d, "%.2f", p.detour);
@@ -236,6 +284,7 @@ CrossParameterizationResult crossParameterize(const IndexedMesh& source, const s
     std::vector<char> fixedS(source.vertexCount(), 0), fixedT(target.vertexCount(), 0);
     for (int v : sa) fixedS[v] = 1;
     for (int v : ta) fixedT[v] = 1;
+    for (const auto& [s, t] : r.layouts.addedAnchors) fixedS[s] = fixedT[t] = 1;
     // The two directions are independent: one on a second thread.
     std::thread inverse([&] {
       r.untangleTarget = untangleCrossMap(target, source, fixedT, r.map.targetToSource, r.map.targetImage,

@@ -47,6 +47,24 @@ Json toJson(const MeshReport& m) {
               {"warnings", m.warnings}};
 }
 
+namespace {
+/// The anchor pairs the layouts added: name and vertex on each surface (one surface: "vertex").
+Json addedAnchorsJson(const LayoutPair& p) {
+  Json list = Json::array();
+  for (size_t k = 0; k < p.addedAnchors.size(); ++k) {
+    Json a = {{"name", addedAnchorName(static_cast<int>(k))}};
+    if (p.sameSurface) {
+      a["vertex"] = p.addedAnchors[k].first;
+    } else {
+      a["source_vertex"] = p.addedAnchors[k].first;
+      a["target_vertex"] = p.addedAnchors[k].second;
+    }
+    list.push_back(a);
+  }
+  return list;
+}
+}  // namespace
+
 Json toJson(const LayoutPair& p) {
   Json l = {{"edges", p.source.edges.size()},
             {"patches", p.source.patches.size()},
@@ -54,6 +72,7 @@ Json toJson(const LayoutPair& p) {
             {"detour", p.detour},
             {"warnings", p.warnings}};
   if (p.method == LayoutMethod::Voronoi) {
+    l["added_anchors"] = addedAnchorsJson(p);
     // "diagram": whose Voronoi diagram gave the layout (the target's when the source's detoured).
     l["diagram"] = p.reversed ? "target" : "source";
     l["same_surface"] = p.sameSurface;
@@ -120,7 +139,9 @@ Json layoutJobJson(const LayoutJob& job, const LayoutJobResult& r) {
       j["layout"] = {{"edges", l.layout.edges.size()},         {"patches", l.layout.patches.size()},
                      {"multi_linkages", l.layout.multipleLinkages()}, {"cut_paths", l.cutPaths},
                      {"triangulation_paths", l.triangulationPaths},   {"removed_paths", l.removedPaths},
-                     {"rejected_paths", l.rejectedPaths}};
+                     {"rejected_paths", l.rejectedPaths},
+                     {"added_anchors", addedAnchorsJson(r.layouts)},
+                     {"warnings", r.layouts.warnings}};
     }
     return j;
   }
@@ -202,6 +223,9 @@ std::vector<std::string> layoutLines(const LayoutPair& p) {
                            "multiple linkages",
                            p.source.edges.size(), p.sourceStats.cutPaths - p.sourceStats.removedPaths,
                            p.sourceStats.triangulationPaths, p.source.patches.size(), p.source.multipleLinkages()));
+    if (!p.addedAnchors.empty())
+      lines.push_back(format("        %zu anchor pair%s added where a handle is smaller than the anchor spacing",
+                             p.addedAnchors.size(), plural(static_cast<int>(p.addedAnchors.size()))));
     if (p.sameSurface)
       lines.push_back("        target: the source itself (same vertices, faces and anchors): the same layout");
     else
@@ -284,7 +308,10 @@ std::vector<std::string> layoutJobLines(const LayoutJob& job, const LayoutJobRes
                            "linkages",
                            l.layout.edges.size(), l.cutPaths - l.removedPaths, l.triangulationPaths,
                            l.layout.patches.size(), l.layout.multipleLinkages()));
-    lines.push_back(format("time    voronoi %.3f s, layout %.3f s", l.voronoiSeconds, l.layoutSeconds));
+    if (!r.layouts.addedAnchors.empty())
+      lines.push_back(format("        %zu anchor%s added where a handle is smaller than the anchor spacing",
+                             r.layouts.addedAnchors.size(), plural(static_cast<int>(r.layouts.addedAnchors.size()))));
+    lines.push_back(format("time    voronoi %.3f s, layout %.3f s", r.times.voronoi, r.times.sourceLayout));
     lines.push_back(format("wrote   %s/{layout,paths,clusters}.ply", job.outDir.c_str()));
     return lines;
   }

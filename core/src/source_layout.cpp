@@ -156,6 +156,19 @@ SourceLayoutResult buildSourceLayout(const IndexedMesh& input, const std::vector
     anchorOf.assign(L.mesh.vertexCount(), -1);
     for (int i = 0; i < na; ++i) anchorOf[anchors[i]] = i;
   };
+  // The surviving paths into the layout, numbered in order.
+  auto compact = [&] {
+    std::vector<int> newId(paths.edges.size(), -1);
+    for (size_t p = 0; p < paths.edges.size(); ++p)
+      if (paths.alive[p]) {
+        newId[p] = static_cast<int>(L.edges.size());
+        L.edges.push_back(std::move(paths.edges[p]));
+      }
+    L.edgePath = tracer.edgePath();
+    for (int& p : L.edgePath)
+      if (p >= 0) p = newId[p];
+    L.faceCluster = tracer.faceLabel();
+  };
   // The regions, analysed once and then updated where each path was cut in; regions are taken
   // in the order of their lowest face, as a fresh analysis would number them.
   RegionMap rm;
@@ -182,11 +195,26 @@ SourceLayoutResult buildSourceLayout(const IndexedMesh& input, const std::vector
       s += ", " + std::to_string(reg.interiorAnchors.size()) + " anchors inside)";
       return s;
     };
+    // Stuck in region `bad`: keep the partial layout and where an anchor would help.
+    auto stuck = [&] {
+      const int seed = rm.firstFace[bad];
+      compact();
+      L.rotation.assign(na, {});
+      for (int i = 0; i < na; ++i) L.rotation[i] = rotationAt(L.mesh, L.edgePath, L.anchorVertices[i]);
+      refreshAnchorOf();
+      const auto sig = regionSignaturesAt(L.mesh, L.edgePath, anchorOf, L.edges, {seed}, scratch);
+      r.stuck = true;
+      r.stuckRegion = sig.front();
+      RegionDistances d;
+      if (regionDistances(L, r.stuckRegion, d) && d.deepest() >= 0) r.stuckVertex = d.vertices[d.deepest()];
+      r.layoutSeconds = seconds(t0);
+      return r;
+    };
     if (r.triangulationPaths >= maxExtra) {
       r.status = Status::error(ErrorCode::LayoutFailed,
                                "the source layout could not be triangulated after " + std::to_string(maxExtra) +
                                    " extra paths; " + describe() + " remains; add anchors there");
-      return r;
+      return stuck();
     }
     // An empty 2-gon: two paths between the same anchors enclose nothing; drop one of them.
     if (reg.loops.size() == 1 && reg.eulerCharacteristic == 1 && reg.interiorAnchors.empty() &&
@@ -271,7 +299,7 @@ SourceLayoutResult buildSourceLayout(const IndexedMesh& input, const std::vector
       r.status = Status::error(ErrorCode::LayoutFailed,
                                "the source layout cannot be completed: no path can split " + describe() +
                                    "; add anchors there");
-      return r;
+      return stuck();
     }
     LayoutEdge e;
     e.a = ends[bestSource].anchor, e.b = ends[best.goal].anchor, e.kind = EdgeKind::Triangulation;
@@ -301,16 +329,7 @@ SourceLayoutResult buildSourceLayout(const IndexedMesh& input, const std::vector
   }
 
   // 3. Compact the surviving paths into the layout.
-  std::vector<int> newId(paths.edges.size(), -1);
-  for (size_t p = 0; p < paths.edges.size(); ++p)
-    if (paths.alive[p]) {
-      newId[p] = static_cast<int>(L.edges.size());
-      L.edges.push_back(std::move(paths.edges[p]));
-    }
-  L.edgePath = tracer.edgePath();
-  for (int& p : L.edgePath)
-    if (p >= 0) p = newId[p];
-  L.faceCluster = tracer.faceLabel();
+  compact();
   if (Status s = assemblePatches(L); !s) {
     r.status = s;
     return r;

@@ -359,6 +359,10 @@ TargetLayoutResult buildTargetLayout(const Layout& src, const IndexedMesh& targe
 
   L.edgePath = tracer.edgePath();
   L.faceCluster = tracer.faceLabel();
+  if (options.partial) {
+    r.layoutSeconds = seconds(t0);
+    return r;
+  }
   if (Status s = assemblePatches(L); !s) {
     r.status = s;
     return r;

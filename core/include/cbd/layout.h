@@ -229,6 +229,22 @@ std::vector<int> inputFacePatch(const Layout& layout);
 /// The Voronoi cluster of every input face, the same way (all -1 when the layout has none).
 std::vector<int> inputFaceCluster(const Layout& layout);
 
+/// Distances inside one region of a layout (its paths so far; patches not needed), along mesh
+/// edges inside the region, from each input vertex of the region off its boundary: to the
+/// boundary (its paths and anchors) and to each path bounding it.
+struct RegionDistances {
+  std::vector<int> sides;                   ///< the layout edges on the region's boundary, each once
+  std::vector<int> vertices;                ///< input vertices inside the region, off its boundary
+  std::vector<double> toBoundary;           ///< per vertex
+  std::vector<std::vector<double>> toSide;  ///< per vertex, per side (infinite: not reachable)
+  /// Index into `vertices` of the one farthest from the boundary; -1 when there is none.
+  int deepest() const;
+};
+
+/// The distances in the region of `layout` whose signature is `region`; false when no region has
+/// that signature.
+bool regionDistances(const Layout& layout, const RegionSignature& region, RegionDistances& out);
+
 /// Assemble `layout.patches`, `layout.rotation` and `layout.facePatch` from the paths cut into
 /// `layout.mesh` (`layout.edgePath` set). InternalError if a region is not a triangle.
 Status assemblePatches(Layout& layout);

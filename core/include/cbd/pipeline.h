@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "cbd/anchor_pairs.h"
 #include "cbd/distortion.h"
 #include "cbd/greedy_layout.h"
 #include "cbd/map_optimization.h"
@@ -27,6 +28,9 @@ enum class LayoutMethod {
 };
 
 const char* layoutMethodName(LayoutMethod m);
+
+/// The name of the k-th anchor pair the layouts added (0-based): "added1", "added2", ...
+std::string addedAnchorName(int k);
 
 /// The last stage of the cross-map, after the composition.
 enum class MapStage {
@@ -50,6 +54,10 @@ struct CrossParameterizationOptions {
   /// it, anchors swapped left for right above it (test_pipeline checks both on the bundled
   /// pair). 0: never.
   double detourWarning = 1.8;
+  /// Voronoi method: where the source layout gets stuck in a region no path can split (a handle
+  /// smaller than the anchor spacing), add an anchor pair there (anchor_pairs.h) and build both
+  /// layouts again, at most this many times; -1: 4 x genus + 2; 0: never (the layout fails).
+  int maxAnchorPairs = -1;
   /// Voronoi method: the greedy baseline's path flipping (`flipLayoutPaths`) applied to its
   /// layouts too, after they are built (the baseline always flips, as the paper grants it).
   bool flipPaths = false;
@@ -114,6 +122,10 @@ struct LayoutPair {
   /// is the source's rather than one traced again in Procedure 1 order (which, on the same
   /// surface, can take other shortest paths where paths compete for vertices).
   bool sameSurface = false;
+  /// Voronoi method: the anchor pairs added (`maxAnchorPairs`), as (source vertex, target
+  /// vertex) of the input meshes, in the order added; the layouts' anchors are the given ones
+  /// followed by these, named `addedAnchorName(k)`.
+  std::vector<std::pair<int, int>> addedAnchors;
   /// What the caller should tell the user (the layouts are valid): a detour above
   /// `detourWarning`.
   std::vector<std::string> warnings;

@@ -40,6 +40,14 @@ struct SourceLayoutResult {
   int rejectedPaths = 0;
   double voronoiSeconds = 0.0;
   double layoutSeconds = 0.0;    ///< cuts, paths and triangulation
+  /// LayoutFailed because no path can split a region (a handle smaller than the anchor spacing,
+  /// typically): `layout` then holds the paths traced so far (edges, edgePath, faceCluster and
+  /// rotation; no patches), `stuckRegion` is that region's signature in it, and `stuckVertex`
+  /// the input vertex deepest inside it (`RegionDistances::deepest`), where an added anchor lets the
+  /// layout go on (anchor_pairs.h); -1 when the region has none off its boundary.
+  bool stuck = false;
+  RegionSignature stuckRegion;
+  int stuckVertex = -1;
 };
 
 /// Build the base domain on a validated closed surface with anchors at the given vertices

@@ -39,6 +39,10 @@ struct TargetLayoutOptions {
   /// the source layout's `faceCluster`; without it, or when false, Procedure 1's order alone.
   bool waitForPassedAnchors = true;
   std::vector<std::string> anchorNames;  ///< for messages (`anchorLabel`); empty: by position
+  /// The source layout is partial (a stuck source layout: paths, edgePath and rotation, no
+  /// patches): trace its paths and stop there, `layout` without patches. Its regions then match
+  /// the source's, signature for signature (no blocking), which is what anchor_pairs.h needs.
+  bool partial = false;
 };
 
 /// Result of `buildTargetLayout`.
