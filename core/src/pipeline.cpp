@@ -94,7 +94,8 @@ LayoutPair voronoiLayouts(const IndexedMesh& from, const std::vector<int>& fa, c
   if (!p.sourceStats.status) {
     p.status = p.sourceStats.status;
     if (!p.addedAnchors.empty())
-      p.status.message += " (after adding " + std::to_string(p.addedAnchors.size()) + " anchor pairs, the most allowed)";
+      p.status.message += " (after adding " + std::to_string(p.addedAnchors.size()) + " anchor pairs" +
+                          (static_cast<int>(p.addedAnchors.size()) >= maxPairs ? ", the most allowed)" : ")");
     return p;
   }
   if (const LayoutCheck c = validateLayout(p.sourceStats.layout, euler); !c.status) return p.status = c.status, p;
