@@ -37,7 +37,8 @@ struct LayoutJobResult {
   LoadedSurface single;             ///< the source alone (when not paired)
   SourceLayoutResult singleLayout;  ///< its layout and counters
   LoadedInput input;                ///< both surfaces (when paired)
-  LayoutPair layouts;               ///< their layouts
+  LayoutPair layouts;               ///< their layouts; one surface: its added anchors and warnings
+                                    ///< (the layout itself is in `singleLayout`)
   StageTimes times;                 ///< `total` includes loading and writing
 };
 
