@@ -482,13 +482,13 @@ bool regionDistances(const Layout& layout, const RegionSignature& region, Region
   for (size_t i = 0; i < rm.regions.size(); ++i) {
     const auto sig = regionSignaturesAt(m, layout.edgePath, anchorOf, layout.edges, {rm.firstFace[i]}, scratch, &faces);
     if (sig.size() != 1 || !(sig[0] == region)) continue;
-    std::vector<char> inside(m.vertexCount(), 0);
+    std::vector<char> inside(m.vertexCount(), 0), onBoundary(m.vertexCount(), 0);
     std::vector<int> boundary;
     for (int f : faces[0])
       for (int v : m.faceVertices(f)) {
         if (inside[v]) continue;
         inside[v] = 1;
-        if (anchorOf[v] >= 0 || onPath(m, layout.edgePath, v)) boundary.push_back(v);
+        if (anchorOf[v] >= 0 || onPath(m, layout.edgePath, v)) boundary.push_back(v), onBoundary[v] = 1;
       }
     for (const auto& loop : region.loops)
       for (const auto& [edge, direction] : loop)
@@ -504,7 +504,7 @@ bool regionDistances(const Layout& layout, const RegionSignature& region, Region
       while (!queue.empty()) {
         const auto [d, v] = queue.top();
         queue.pop();
-        if (d > dist[v] || (d > 0 && (anchorOf[v] >= 0 || onPath(m, layout.edgePath, v)))) continue;
+        if (d > dist[v] || (d > 0 && onBoundary[v])) continue;
         const int start = m.outgoing(v);
         int h = start;
         do {

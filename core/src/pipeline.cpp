@@ -80,8 +80,7 @@ LayoutPair voronoiLayouts(const IndexedMesh& from, const std::vector<int>& fa, c
       const auto t0 = std::chrono::steady_clock::now();
       pair = placeAnchorPair(p.sourceStats, onto, targetAnchors, ao, progress.quiet());
       p.times.targetLayout += seconds(t0);
-      if (pair.status.code == ErrorCode::Cancelled) return p.status = pair.status, p;
-      if (!pair.status) return p.status = pair.status, p;
+      if (!pair.status) return p.status = pair.status, p;  // cancelled, or no pair to add
     }
     p.addedAnchors.push_back({pair.sourceVertex, pair.targetVertex});
     sourceAnchors.push_back(pair.sourceVertex);
