@@ -1,6 +1,7 @@
 // Stage 4: patch parameterizations, the composed cross-map and its distortion.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "cbd/anchor_sampling.h"
@@ -42,6 +43,58 @@ TEST(Parameterization, EveryPatchMapsBijectivelyOntoTheTriangle) {
       for (int c = 0; c < 3; ++c)
         if (v[k] == r.layout.anchorVertices[patch.corners[c]]) EXPECT_LT((p.cornerUV[f][k] - domainCorner(c)).norm(), 1e-15);
   }
+}
+
+TEST(Parameterization, ADiskWithCollapsedFacesStillMapsBijectively) {
+  // A vertex and its whole ring at one point (edge splits along many paths leave such slivers):
+  // its mean-value weights are all zero, and a vertex's weights must be positive. The disk of
+  // faces within three rings of it, its rim fixed on the unit circle, still maps onto the disk
+  // with every face positive, the collapsed ones included.
+  const IndexedMesh sphere = fx::icosphere(2);
+  const int centre = fx::nearestVertex(sphere, Vec3(0, 0, 1));
+  std::vector<int> ringOf(sphere.vertexCount(), -1);
+  ringOf[centre] = 0;
+  for (int ring = 1; ring <= 3; ++ring)
+    for (const auto& f : sphere.faces)
+      for (int k = 0; k < 3; ++k)
+        if (ringOf[f[k]] == ring - 1)
+          for (int j = 0; j < 3; ++j)
+            if (ringOf[f[j]] < 0) ringOf[f[j]] = ring;
+  IndexedMesh collapsed = sphere;
+  for (const auto& f : sphere.faces)
+    for (int k = 0; k < 3; ++k)
+      if (ringOf[f[k]] == 1) collapsed.positions[f[k]] = sphere.positions[centre];
+  const RefinedMesh mesh(collapsed);
+  std::vector<int> disk;
+  for (int f = 0; f < mesh.faceCount(); ++f) {
+    const auto v = mesh.faceVertices(f);
+    if (ringOf[v[0]] >= 0 && ringOf[v[1]] >= 0 && ringOf[v[2]] >= 0) disk.push_back(f);
+  }
+  // The rim: the third ring, in the order of its angle about the z axis on the sphere.
+  auto fixedAt = [&](int f, int k, Vec2& at) {
+    const int v = mesh.faceVertices(f)[k];
+    if (ringOf[v] != 3) return false;
+    const Vec3& p = sphere.positions[v];
+    const double angle = std::atan2(p.y(), p.x());
+    at = Vec2(std::cos(angle), std::sin(angle));
+    return true;
+  };
+  std::vector<std::array<Vec2, 3>> uv;
+  int unknowns = 0;
+  ASSERT_TRUE(meanValueMap(mesh, disk, fixedAt, uv, &unknowns));
+  EXPECT_EQ(unknowns, std::count_if(ringOf.begin(), ringOf.end(), [](int r) { return r >= 0 && r < 3; }));
+  double area = 0.0;
+  for (const auto& t : uv) {
+    EXPECT_GT(signedArea(t), 0.0);
+    area += signedArea(t);
+  }
+  double rim = 0.0;  // the area of the polygon of the rim
+  std::vector<double> angles;
+  for (int v = 0; v < sphere.vertexCount(); ++v)
+    if (ringOf[v] == 3) angles.push_back(std::atan2(sphere.positions[v].y(), sphere.positions[v].x()));
+  std::sort(angles.begin(), angles.end());
+  for (size_t k = 0; k < angles.size(); ++k) rim += 0.5 * std::sin(angles[(k + 1) % angles.size()] - angles[k] + (k + 1 == angles.size() ? 2 * M_PI : 0));
+  EXPECT_NEAR(area, rim, 1e-9);
 }
 
 TEST(CrossMap, SameLayoutOnBothSidesIsTheIdentity) {

@@ -241,6 +241,47 @@ TEST(PathTracer, ALoopOfPathsCannotBeCrossedUntilReleased) {
   EXPECT_EQ(t.recommit(chains[1], 1).code, ErrorCode::InternalError) << "its edges are not free any more";
 }
 
+TEST(PathTracer, ARolledBackPathLeavesTheGraphAsItWas) {
+  // A committed path, then one refused and rolled back, over and over in one corridor: the
+  // mesh and the edge nodes stay as after the first path, and the same query finds the same
+  // path every time (release alone keeps the path's vertices: each retry refines the corridor).
+  AxisSphere s;
+  PathTracer t(s.mesh, EdgeNodeOptions{});
+  for (int a : s.anchor) t.setAnchor(a, true);
+  std::vector<int> first;
+  ASSERT_TRUE(t.commit(t.trace(query(s.anchor[0], s.anchor[1])), 0, first).ok());
+  const int vertices = s.mesh.vertexCount(), faces = s.mesh.faceCount();
+  const int64_t nodes = t.nodeCount();
+  std::vector<int> counts(s.mesh.edgeCount());
+  for (int e = 0; e < s.mesh.edgeCount(); ++e) counts[e] = t.edgeNodeCount(e);
+  const TracedPath p = t.trace(query(s.anchor[4], s.anchor[2]));
+  expectJoins(t, p, s.anchor[4], s.anchor[2]);
+  for (int round = 0; round < 10; ++round) {
+    const TracedPath again = t.trace(query(s.anchor[4], s.anchor[2]));
+    ASSERT_TRUE(again.found);
+    EXPECT_EQ(again.nodes, p.nodes) << "round " << round;
+    EXPECT_EQ(again.length, p.length);
+    const PathTracer::Checkpoint before = t.checkpoint();
+    std::vector<int> chain;
+    ASSERT_TRUE(t.commit(again, 1, chain).ok());
+    expectCommitted(t, s.in, again, 1, chain);
+    EXPECT_GT(s.mesh.vertexCount(), vertices);
+    t.rollback(chain, 1, before);
+    EXPECT_EQ(s.mesh.vertexCount(), vertices);
+    EXPECT_EQ(s.mesh.faceCount(), faces);
+    EXPECT_EQ(t.nodeCount(), nodes);
+  }
+  for (int e = 0; e < s.mesh.edgeCount(); ++e) EXPECT_EQ(t.edgeNodeCount(e), counts[e]) << "edge " << e;
+  for (int v = 0; v < s.mesh.vertexCount(); ++v)
+    EXPECT_EQ(t.pathCount(v), std::count(first.begin(), first.end(), v)) << "vertex " << v;
+  // The first path is still a wall; a path committed now is cut in as usual.
+  for (size_t k = 0; k + 1 < first.size(); ++k)
+    EXPECT_EQ(t.pathOfEdge(RefinedMesh::edgeOf(s.mesh.findHalfedge(first[k], first[k + 1]))), 0);
+  std::vector<int> chain;
+  ASSERT_TRUE(t.commit(p, 1, chain).ok());
+  expectCommitted(t, s.in, p, 1, chain);
+}
+
 TEST(PathTracer, LabelledEdgesAreWallsAndFiltersKeepToTheirFaces) {
   // A latitude-longitude sphere: the equator ring of edges labelled 7 separates the poles when
   // walls of label 7 are asked for, not otherwise.

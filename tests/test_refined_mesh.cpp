@@ -239,6 +239,52 @@ TEST(RefinedMesh, ManySplitsKeepTheSurfaceItsAreaAndItsEulerCharacteristic) {
   }
 }
 
+TEST(RefinedMesh, UndoingSplitsGivesBackTheMeshAsItWasIndicesIncluded) {
+  // Everything a split touches, compared entry by entry: every halfedge's ends, next and face,
+  // every face's halfedge and input face, every vertex's position, place and outgoing halfedge.
+  auto same = [](const RefinedMesh& a, const RefinedMesh& b) {
+    if (a.vertexCount() != b.vertexCount() || a.halfedgeCount() != b.halfedgeCount() || a.faceCount() != b.faceCount())
+      return false;
+    for (int h = 0; h < a.halfedgeCount(); ++h)
+      if (a.to(h) != b.to(h) || a.next(h) != b.next(h) || a.face(h) != b.face(h)) return false;
+    for (int e = 0; e < a.edgeCount(); ++e)
+      if (a.onInputEdge(e) != b.onInputEdge(e)) return false;
+    for (int f = 0; f < a.faceCount(); ++f)
+      if (a.faceHalfedge(f) != b.faceHalfedge(f) || a.inputFace(f) != b.inputFace(f)) return false;
+    for (int v = 0; v < a.vertexCount(); ++v)
+      if (a.position(v) != b.position(v) || a.outgoing(v) != b.outgoing(v) || a.location(v).face != b.location(v).face ||
+          a.location(v).bary != b.location(v).bary)
+        return false;
+    return true;
+  };
+  std::mt19937 rng(5);
+  for (const IndexedMesh& in : {fx::icosphere(2), fx::torus(2.0, 0.7, 16, 10)}) {
+    RefinedMesh m(in);
+    auto splitSome = [&](int n) {
+      for (int i = 0; i < n; ++i)
+        m.splitEdge(std::uniform_int_distribution<int>(0, m.halfedgeCount() - 1)(rng),
+                    std::uniform_real_distribution<double>(0.1, 0.9)(rng));
+    };
+    splitSome(40);
+    const RefinedMesh after40 = m;
+    EXPECT_EQ(m.splitCount(), 40);
+    splitSome(60);
+    EXPECT_FALSE(same(m, after40));
+    m.undoSplits(40);
+    EXPECT_EQ(m.splitCount(), 40);
+    EXPECT_TRUE(same(m, after40)) << "back to 40 splits";
+    EXPECT_TRUE(connectivityHolds(m));
+    EXPECT_TRUE(surfaceKept(m, in));
+    EXPECT_EQ(m.lastSplit().vertex, after40.lastSplit().vertex);
+    // Splitting again from there works as on a mesh that never had the undone splits.
+    splitSome(30);
+    EXPECT_TRUE(connectivityHolds(m));
+    EXPECT_TRUE(surfaceKept(m, in));
+    m.undoSplits(0);
+    EXPECT_TRUE(same(m, RefinedMesh(in))) << "back to the input";
+  }
+}
+
 TEST(RefinedMesh, UnreferencedVerticesStayIsolated) {
   IndexedMesh in = fx::tetrahedron();
   in.positions.push_back(Vec3(7, 7, 7));  // vertex 4, on no face

@@ -401,6 +401,8 @@ void RegionTracker::undo() {
     sig_.pop_back();
   }
   undo_.pop_back();
+  // Faces the mesh no longer has (a path rolled back with its splits) lose their labels.
+  label_.resize(std::min(label_.size(), static_cast<size_t>(mesh_.faceCount())));
 }
 
 double chainLength(const RefinedMesh& m, const std::vector<int>& chain) {

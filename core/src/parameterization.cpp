@@ -136,10 +136,18 @@ bool meanValueMap(const RefinedMesh& mesh, const std::vector<int>& faces,
   if (unknowns) *unknowns = n;
   std::vector<Vec2> solved(n);
   if (n > 0) {
-    // Mean-value weights (Floater 2003): w_ij = (tan(a1/2) + tan(a2/2)) / |v_i - v_j|.
-    std::vector<Eigen::Triplet<double>> trip;
-    Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(n, 2);
-    std::vector<double> diag(n, 0.0);
+    // Mean-value weights (Floater 2003): w_ij = (tan(a1/2) + tan(a2/2)) / |v_i - v_j|. A vertex
+    // with a zero or non-finite weight (a zero angle or a zero-length edge: degenerate faces,
+    // which edge splits along many paths can leave) takes uniform weights instead. Every row then
+    // has positive weights, which is all Floater's bijectivity theorem asks of a row.
+    struct Term {
+      int i;
+      int j;   // unknown, or -1: fixed at `at`
+      double weight;
+      Vec2 at;
+    };
+    std::vector<Term> terms;
+    std::vector<char> uniform(n, 0);
     for (int f : faces) {
       const auto v = mesh.faceVertices(f);
       for (int k = 0; k < 3; ++k) {
@@ -152,19 +160,24 @@ bool meanValueMap(const RefinedMesh& mesh, const std::vector<int>& faces,
         const double t = std::tan(0.5 * angle);
         for (int side = 1; side <= 2; ++side) {
           const int w = v[(k + side) % 3];
-          const double len = (mesh.position(w) - pi).norm();
-          const double weight = t / std::max(len, 1e-300);
-          diag[i] += weight;
+          const double weight = t / (mesh.position(w) - pi).norm();
+          if (!(weight > 0.0) || !std::isfinite(weight)) uniform[i] = 1;
+          Term term{i, -1, weight, Vec2::Zero()};
           auto jt = index.find(w);
-          if (jt != index.end()) trip.emplace_back(i, jt->second, -weight);
-          else {
-            Vec2 at = Vec2::Zero();
-            if (!fixedAt(f, (k + side) % 3, at)) return false;  // fixed at one corner, free at another
-            rhs(i, 0) += weight * at.x();
-            rhs(i, 1) += weight * at.y();
-          }
+          if (jt != index.end()) term.j = jt->second;
+          else if (!fixedAt(f, (k + side) % 3, term.at)) return false;  // fixed at one corner, free at another
+          terms.push_back(term);
         }
       }
+    }
+    std::vector<Eigen::Triplet<double>> trip;
+    Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(n, 2);
+    std::vector<double> diag(n, 0.0);
+    for (const Term& term : terms) {
+      const double weight = uniform[term.i] ? 1.0 : term.weight;
+      diag[term.i] += weight;
+      if (term.j >= 0) trip.emplace_back(term.i, term.j, -weight);
+      else rhs.row(term.i) += weight * term.at.transpose();
     }
     for (int i = 0; i < n; ++i) trip.emplace_back(i, i, diag[i]);
     Eigen::SparseMatrix<double> A(n, n);

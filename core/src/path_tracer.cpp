@@ -29,6 +29,7 @@ PathTracer::PathTracer(RefinedMesh& mesh, const EdgeNodeOptions& options) : mesh
   edgeNodes_.assign(ne, 0);
   slotBase_.assign(ne, 0);
   for (int e = 0; e < ne; ++e) computeEdgeNodes(e);
+  journal_.clear();  // nothing to go back to before the first path
 }
 
 void PathTracer::setAnchor(int v, bool isAnchor) { anchor_[v] = isAnchor ? 1 : 0; }
@@ -51,6 +52,7 @@ void PathTracer::growEdges() {
 }
 
 void PathTracer::computeEdgeNodes(int e) {
+  journal_.push_back({e, edgeNodes_[e], slotBase_[e]});
   if (edgePath_[e] >= 0) {
     edgeNodes_[e] = 0;
     return;
@@ -445,6 +447,7 @@ Status PathTracer::commit(const TracedPath& path, int pathId, std::vector<int>& 
   }
   for (size_t i = 0; i + 1 < vertices.size(); ++i) {
     const int e = RefinedMesh::edgeOf(mesh_.findHalfedge(vertices[i], vertices[i + 1]));
+    journal_.push_back({e, edgeNodes_[e], slotBase_[e]});
     edgePath_[e] = pathId;
     edgeNodes_[e] = 0;
   }
@@ -462,7 +465,10 @@ Status PathTracer::recommit(const std::vector<int>& vertices, int pathId) {
   }
   for (size_t i = 1; i + 1 < vertices.size(); ++i)
     if (vertexPaths_[vertices[i]] != 0) return Status::error(ErrorCode::InternalError, "a path to restore meets another path");
-  for (int e : edges) edgePath_[e] = pathId, edgeNodes_[e] = 0;
+  for (int e : edges) {
+    journal_.push_back({e, edgeNodes_[e], slotBase_[e]});
+    edgePath_[e] = pathId, edgeNodes_[e] = 0;
+  }
   for (int v : vertices) ++vertexPaths_[v];
   return Status::success();
 }
@@ -477,6 +483,27 @@ void PathTracer::release(const std::vector<int>& vertices, int pathId) {
     computeEdgeNodes(e);
   }
   for (int v : vertices) --vertexPaths_[v];
+}
+
+void PathTracer::rollback(const std::vector<int>& vertices, int pathId, const Checkpoint& cp) {
+  for (size_t i = 0; i + 1 < vertices.size(); ++i) {
+    const int h = mesh_.findHalfedge(vertices[i], vertices[i + 1]);
+    if (h >= 0 && edgePath_[RefinedMesh::edgeOf(h)] == pathId) edgePath_[RefinedMesh::edgeOf(h)] = -1;
+  }
+  for (int v : vertices) --vertexPaths_[v];
+  // Latest first, so an edge changed twice ends with its oldest value; entries of edges the
+  // splits created go with them.
+  for (size_t k = journal_.size(); k-- > cp.journal;) {
+    const NodeChange& c = journal_[k];
+    if (c.edge < static_cast<int>(edgeNodes_.size())) edgeNodes_[c.edge] = c.nodes, slotBase_[c.edge] = c.base;
+  }
+  journal_.resize(cp.journal);
+  mesh_.undoSplits(cp.splits);
+  const size_t ne = mesh_.edgeCount(), nf = mesh_.faceCount(), nv = mesh_.vertexCount();
+  edgeLabel_.resize(ne), edgePath_.resize(ne), edgeNodes_.resize(ne), slotBase_.resize(ne);
+  faceLabel_.resize(nf);
+  anchor_.resize(nv), vertexPaths_.resize(nv);
+  slotEdge_.resize(cp.nodeSlots), slotPos_.resize(cp.nodeSlots);
 }
 
 }  // namespace cbd

@@ -104,6 +104,7 @@ int RefinedMesh::splitEdge(int h, double t) {
 
   // The new vertex, on the input surface.
   const int m = vertexCount();
+  const SplitUndo undo{{}, faceHe_[f1], faceHe_[f2], out_[b]};
   pos_.push_back((1.0 - t) * pos_[a] + t * pos_[b]);
   SurfacePoint sp;
   sp.face = inputFace_[f1];
@@ -149,7 +150,36 @@ int RefinedMesh::splitEdge(int h, double t) {
   onInputEdge_.push_back(0);      // diagonals lie inside input faces
   onInputEdge_.push_back(0);
   last_ = {h, m, edgeOf(e1), edgeOf(e2), edgeOf(e3), f3, f4};
+  history_.push_back(undo);
+  history_.back().record = last_;
   return m;
+}
+
+void RefinedMesh::undoSplits(int count) {
+  while (static_cast<int>(history_.size()) > std::max(count, 0)) {
+    const SplitUndo& u = history_.back();
+    const SplitRecord& r = u.record;
+    // The inverse of splitEdge: halfedges, faces and the vertex it appended go; the entries it
+    // rewrote get their old values (read back from the new elements, which still hold them).
+    const int h = r.halfedge, t0 = h ^ 1;
+    const int e1 = 2 * r.edgeContinued, e2 = 2 * r.edgeDiagonalA, e3 = 2 * r.edgeDiagonalB;
+    const int b = to_[e1], hn = next_[e1], hp = next_[e2], tn = next_[t0], tp = next_[e3];
+    const int f1 = face_[h], f2 = face_[t0];
+    to_[h] = b;
+    next_[h] = hn, next_[hn] = hp, next_[hp] = h;
+    next_[t0] = tn, next_[tn] = tp, next_[tp] = t0;
+    face_[hn] = f1, face_[tp] = f2;
+    faceHe_[f1] = u.faceHalfedgeA, faceHe_[f2] = u.faceHalfedgeB;
+    out_[b] = u.farOutgoing;
+    pos_.pop_back();
+    loc_.pop_back();
+    out_.pop_back();
+    to_.resize(e1), next_.resize(e1), face_.resize(e1);
+    faceHe_.resize(r.faceNewA), inputFace_.resize(r.faceNewA);
+    onInputEdge_.resize(r.edgeContinued);
+    history_.pop_back();
+    last_ = history_.empty() ? SplitRecord{} : history_.back().record;
+  }
 }
 
 IndexedMesh RefinedMesh::toIndexed() const {

@@ -228,15 +228,14 @@ TargetLayoutResult buildTargetLayout(const Layout& src, const IndexedMesh& targe
     std::vector<int> ring(na, -1);
     std::vector<int> frontier{se.a, se.b};
     ring[se.a] = ring[se.b] = 0;
+    // A refused attempt is rolled back with its splits, so the sectors hold for every attempt.
+    const Sector sa = sectorAt(e, se.a, 0), sb = sectorAt(e, se.b, 0);
+    const int region = tgtRegions.regionOf(sa.faces.front());
+    if (tgtRegions.regionOf(sb.faces.front()) != region) {
+      lastReason = "its two sectors lie in different regions of the partial target layout";
+      return notNow();
+    }
     for (int attempt = 0;; ++attempt) {
-      // Sectors afresh: an undone attempt leaves its splits (new faces) behind.
-      const Sector sa = sectorAt(e, se.a, 0), sb = sectorAt(e, se.b, 0);
-      refreshTargetAnchorOf();
-      const int region = tgtRegions.regionOf(sa.faces.front());
-      if (tgtRegions.regionOf(sb.faces.front()) != region) {
-        lastReason = "its two sectors lie in different regions of the partial target layout";
-        return notNow();
-      }
       const bool wholeRegion = frontier.empty();
       for (int c = 0; c < na; ++c) inRing[c] = ring[c] >= 0;
       std::vector<int> next;
@@ -258,6 +257,7 @@ TargetLayoutResult buildTargetLayout(const Layout& src, const IndexedMesh& targe
         continue;
       }
       std::vector<int> chain;
+      const PathTracer::Checkpoint before = tracer.checkpoint();
       if (Status s = tracer.commit(tp, e, chain); !s) {
         r.status = s;
         return -1;
@@ -269,7 +269,7 @@ TargetLayoutResult buildTargetLayout(const Layout& src, const IndexedMesh& targe
         (attempt == 0 ? r.embeddedInClusters : r.embeddedInRegion)++;
         return 1;
       }
-      tracer.release(chain, e);
+      tracer.rollback(chain, e, before);
       tgtRegions.undo();
       ++r.rejectedPaths;
       lastReason = "its shortest path would enclose other anchors than on the source (blocking)";
@@ -325,6 +325,10 @@ TargetLayoutResult buildTargetLayout(const Layout& src, const IndexedMesh& targe
         ++k;
         continue;
       }
+      // Every attempt reports, embedded or not: a run of refused attempts must stay cancellable.
+      if (!progress.report(0.1 + 0.9 * (ne - static_cast<double>(pending.size())) / std::max(ne, 1),
+                           "tracing the base domain on the target"))
+        return cancelled();
       const int res = tryEmbed(e);
       if (res < 0) return r;
       if (res == 0) {

@@ -187,7 +187,8 @@ class RegionTracker {
   /// `region`; faces the mesh gained since the last call (splits) lie in that region.
   /// Returns the sorted signatures of the regions beside the path.
   std::vector<RegionSignature> add(const std::vector<int>& chain, int region);
-  /// The last added path was removed again (its faces from splits stay, in its region).
+  /// The last added path was removed again: faces from its splits stay in its region, unless
+  /// the mesh undid the splits too (PathTracer::rollback).
   void undo();
 
  private:

@@ -113,6 +113,18 @@ class PathTracer {
 
   /// Undo a committed path (its vertices stay in the mesh; its edges become free again).
   void release(const std::vector<int>& vertices, int pathId);
+  /// The state `rollback` returns to.
+  struct Checkpoint {
+    int splits = 0;
+    size_t nodeSlots = 0, journal = 0;
+  };
+  Checkpoint checkpoint() const { return {mesh_.splitCount(), slotEdge_.size(), journal_.size()}; }
+  /// Undo path `pathId`, committed as `vertices` since `checkpoint` and the only change since:
+  /// its edges freed and its splits undone, so the mesh, the edge nodes and the labels are
+  /// exactly as at the checkpoint. A path refused after it was cut in then leaves no finer
+  /// mesh behind (`release` keeps its vertices, and retrying in one corridor refines it
+  /// without end).
+  void rollback(const std::vector<int>& vertices, int pathId, const Checkpoint& checkpoint);
 
   /// The committed paths a traced (not yet committed) path would lie between where it leaves
   /// its first (`atEnd` false) or last node, an anchor: (the path edge before it, the one after
@@ -141,6 +153,11 @@ class PathTracer {
   std::vector<int> edgeNodes_, slotBase_;
   std::vector<int> slotEdge_;
   std::vector<Vec3> slotPos_;  ///< position of every edge node, fixed when it is created
+  /// Every change to the edge nodes of an edge: (edge, old node count, old first slot).
+  struct NodeChange {
+    int edge, nodes, base;
+  };
+  std::vector<NodeChange> journal_;
   // Dijkstra scratch (stamped so nothing is cleared between searches).
   std::vector<double> distV_, distS_, hV_, hS_;  // distance, A* bound
   std::vector<int64_t> parentV_, parentS_;

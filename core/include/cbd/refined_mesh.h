@@ -82,6 +82,12 @@ class RefinedMesh {
     int faceNewB;        ///< new face split off the face of twin(h)
   };
   const SplitRecord& lastSplit() const { return last_; }
+  /// Splits made so far (the count `undoSplits` returns to).
+  int splitCount() const { return static_cast<int>(history_.size()); }
+  /// Undo the splits made after the first `count`, latest first: the mesh is then exactly as it
+  /// was after `count` splits, indices included (a path refused after it was cut in leaves
+  /// nothing behind).
+  void undoSplits(int count);
 
   /// Barycentric coordinates of vertex v in input face f (v must lie on the closure of f).
   Vec3 baryIn(int v, int f) const;
@@ -99,6 +105,13 @@ class RefinedMesh {
   std::vector<std::array<int, 3>> inputFaceVerts_;
   int inputVertices_ = 0, inputFaces_ = 0;
   SplitRecord last_{};
+  /// Per split, what it overwrote that its record cannot tell: the two old faces' halfedges and
+  /// the far end's outgoing halfedge.
+  struct SplitUndo {
+    SplitRecord record;
+    int faceHalfedgeA, faceHalfedgeB, farOutgoing;
+  };
+  std::vector<SplitUndo> history_;
 };
 
 /// Sum of the faces' areas (the input mesh's area up to rounding: splits keep faces planar).
