@@ -1,5 +1,5 @@
 set terminal pngcairo size 900,420 font 'Sans,10'
-set output '/work/main/bench/results/plots/t_layout.png'
+set output 'bench/results/plots/t_layout.png'
 set style data histograms
 set style histogram clustered gap 1
 set style fill solid 0.85 border -1
@@ -8,4 +8,4 @@ set key outside right top noenhanced
 set ylabel 'layout time (s)'
 set xtics rotate by -20
 set logscale y
-plot '/work/main/bench/results/plots/t_layout.dat' using 2:xtic(1) title 'greedy (Kraevoy and Sheffer)', '' using 3 title 'Voronoi E1', '' using 4 title 'Voronoi C'
+plot 'bench/results/plots/t_layout.dat' using 2:xtic(1) title 'greedy (Kraevoy and Sheffer)', '' using 3 title 'Voronoi E1', '' using 4 title 'Voronoi C'
