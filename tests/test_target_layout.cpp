@@ -2,6 +2,7 @@
 // Every result: both layouts valid, isomorphic (same edges, patches, rotation system).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <functional>
@@ -206,6 +207,47 @@ TEST(TargetLayoutOnRealMeshes, PathsPassAnchorsOnTheSideTheSourceDoes) {
     EXPECT_LT(t.layout.edges[e].length, 1.5 * s.layout.edges[e].length) << a << " - " << b;
   }
   EXPECT_EQ(checked, 1);
+}
+
+TEST(TargetLayoutOnRealMeshes, RefusedPathsOnHighGenusAreRetriedPastTheirCorridors) {
+  // turbine.off (genus 11) onto a smoothly warped copy of itself, 12 anchors by farthest-point
+  // sampling from vertices 2 and 3: the shortest target path between two of them in their
+  // region passes a blade's handle on another side than the source path does, and every
+  // pending edge is refused. Closing the corridors of the refused paths finds the path past the
+  // handle on the source's side. The test fails with `closedCorridorRounds` 0.
+  const std::string path = std::string(CBD_CGAL_MESHES) + "/turbine.off";
+  Mesh loaded;
+  if (!std::filesystem::exists(path) || !loadMesh(path, loaded).status.ok())
+    GTEST_SKIP() << "scripts/setup.sh unpacks " << CBD_CGAL_MESHES;
+  const IndexedMesh s = toIndexed(loaded);
+  IndexedMesh t = s;
+  const Eigen::Matrix3d R = Eigen::AngleAxisd(0.7, Vec3::UnitZ()).toRotationMatrix();
+  for (Vec3& x : t.positions) x = 1.5 * (1.0 + 0.03 * std::sin(10 * x.x()) * std::cos(6.7 * x.y())) * (R * x);
+  const int chi = validateMesh(s, "turbine").eulerCharacteristic;
+  ASSERT_EQ(chi, -20);
+  for (int seed : {2, 3}) {
+    const std::vector<int> a = farthestPointSampling(s, 12, seed);
+    const SourceLayoutResult src = buildSourceLayout(s, a);
+    ASSERT_TRUE(src.status.ok()) << seed << ": " << src.status.message;
+    TargetLayoutOptions without;
+    without.closedCorridorRounds = 0;
+    const TargetLayoutResult refused = buildTargetLayout(src.layout, t, a, without);
+    EXPECT_EQ(refused.status.code, ErrorCode::LayoutFailed) << seed;
+    EXPECT_NE(refused.status.message.find("blocking"), std::string::npos) << refused.status.message;
+    const TargetLayoutResult tl = buildTargetLayout(src.layout, t, a);
+    ASSERT_TRUE(tl.status.ok()) << seed << ": " << tl.status.message;
+    EXPECT_GT(tl.pastClosedCorridors, 0) << seed;
+    EXPECT_TRUE(validateLayout(tl.layout, chi).status.ok()) << seed;
+    EXPECT_TRUE(checkIsomorphic(src.layout, tl.layout).ok()) << seed;
+    // On a copy scaled by 1.5 the paths keep their lengths, times 1.5, up to the bumps and the
+    // detours of paths that had to wait: the median ratio near 1, none winding round a blade.
+    std::vector<double> ratio;
+    for (size_t e = 0; e < src.layout.edges.size(); ++e)
+      ratio.push_back(tl.layout.edges[e].length / (1.5 * src.layout.edges[e].length));
+    std::sort(ratio.begin(), ratio.end());
+    EXPECT_NEAR(ratio[ratio.size() / 2], 1.0, 0.15) << seed;
+    EXPECT_LT(ratio.back(), 3.0) << seed;
+  }
 }
 
 TEST(RegionTracker, AgreesWithFloodFillsPathByPath) {

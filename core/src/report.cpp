@@ -86,7 +86,8 @@ Json toJson(const LayoutPair& p) {
                    {"in_region", p.targetStats.embeddedInRegion},
                    {"postponements", p.targetStats.postponements},
                    {"waited_for_passed_anchors", p.targetStats.waitedForPassedAnchors},
-                   {"rejected_paths", p.targetStats.rejectedPaths}};
+                   {"rejected_paths", p.targetStats.rejectedPaths},
+                   {"past_closed_corridors", p.targetStats.pastClosedCorridors}};
   } else {
     const auto& g = p.greedyStats;
     l["greedy"] = {{"candidates", g.candidates}, {"tried", g.tried},         {"accepted", g.accepted},
@@ -232,6 +233,10 @@ std::vector<std::string> layoutLines(const LayoutPair& p) {
       lines.push_back(format("        %s: %d paths inside the two clusters, %d in the whole region; detour %.2f",
                              p.reversed ? "traced on the source" : "target", p.targetStats.embeddedInClusters,
                              p.targetStats.embeddedInRegion, p.detour));
+    if (p.targetStats.pastClosedCorridors > 0)
+      lines.push_back(format("        %d path%s found only past the corridors of refused ones (a handle passed on "
+                             "the source's side)",
+                             p.targetStats.pastClosedCorridors, plural(p.targetStats.pastClosedCorridors)));
     if (p.reversed)
       lines.push_back(format("        (the layout traced from the source's diagram detoured by %.2f: this one comes "
                              "from the target's Voronoi diagram)",

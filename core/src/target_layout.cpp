@@ -210,6 +210,12 @@ TargetLayoutResult buildTargetLayout(const Layout& src, const IndexedMesh& targe
   RegionTracker tgtRegions(L.mesh, tracer.edgePath(), tgtAnchorOf, src.edges);
   std::vector<char> inRing(na, 0);
   std::string lastReason;
+  // Last resort before failing (nothing else can be traced): an edge whose shortest path in its
+  // region is refused is traced again with the faces its refused paths ran through closed, so
+  // that the next path passes the region's handles on another side (another homotopy class
+  // between the two sectors). The faces round the two anchors stay open, so the path can
+  // still leave through its sectors.
+  bool walled = false;
   auto tryEmbed = [&](int e) -> int {  // 1 embedded, 0 not now, -1 internal error (r.status set)
     const LayoutEdge& se = src.edges[e];
     // The regions beside this edge in the partial source layout once it is added: what the
@@ -235,6 +241,8 @@ TargetLayoutResult buildTargetLayout(const Layout& src, const IndexedMesh& targe
       lastReason = "its two sectors lie in different regions of the partial target layout";
       return notNow();
     }
+    std::vector<char> walls;
+    int wallRounds = 0;
     for (int attempt = 0;; ++attempt) {
       const bool wholeRegion = frontier.empty();
       for (int c = 0; c < na; ++c) inRing[c] = ring[c] >= 0;
@@ -250,9 +258,11 @@ TargetLayoutResult buildTargetLayout(const Layout& src, const IndexedMesh& targe
       q.filter.label = &tgtRegions.labels();
       q.filter.a = q.filter.b = region;
       if (!wholeRegion) q.filter.group = &tracer.faceLabel(), q.filter.groupAllowed = &inRing;
+      if (wallRounds > 0) q.filter.walls = &walls;
       TracedPath tp = tracer.trace(q);
       if (!tp.found) {
-        lastReason = attempt == 0 ? "no path inside the two target clusters" : "no path inside its region";
+        if (wallRounds == 0)
+          lastReason = attempt == 0 ? "no path inside the two target clusters" : "no path inside its region";
         if (wholeRegion) break;
         continue;
       }
@@ -267,13 +277,39 @@ TargetLayoutResult buildTargetLayout(const Layout& src, const IndexedMesh& targe
         L.edges[e].vertices = std::move(chain);
         L.edges[e].length = tp.length;
         (attempt == 0 ? r.embeddedInClusters : r.embeddedInRegion)++;
+        r.pastClosedCorridors += wallRounds > 0;
         return 1;
       }
+      std::vector<int> corridor;  // the faces the refused path runs through
+      if (walled && wholeRegion && wallRounds < options.closedCorridorRounds)
+        for (size_t i = 0; i + 1 < chain.size(); ++i) {
+          const int h = L.mesh.findHalfedge(chain[i], chain[i + 1]);
+          if (h < 0) continue;
+          corridor.push_back(L.mesh.face(h));
+          corridor.push_back(L.mesh.face(RefinedMesh::twin(h)));
+        }
       tracer.rollback(chain, e, before);
       tgtRegions.undo();
       ++r.rejectedPaths;
-      lastReason = "its shortest path would enclose other anchors than on the source (blocking)";
-      if (wholeRegion) break;
+      lastReason = walled ? "every path tried, also past the corridors of the refused ones, would enclose other "
+                            "anchors than on the source (blocking)"
+                          : "its shortest path would enclose other anchors than on the source (blocking)";
+      if (!wholeRegion) continue;
+      if (corridor.empty()) break;
+      // After the rollback the faces the path split are back under their own indices (the
+      // split halves beyond the face count are gone).
+      walls.resize(L.mesh.faceCount(), 0);
+      for (int f : corridor)
+        if (f >= 0 && f < L.mesh.faceCount()) walls[f] = 1;
+      for (const int a : {anchors[se.a], anchors[se.b]}) {
+        const int h0 = L.mesh.outgoing(a);
+        int h = h0;
+        do {
+          walls[L.mesh.face(h)] = 0;
+          h = L.mesh.rotateCCW(h);
+        } while (h != h0);
+      }
+      ++wallRounds;
     }
     return notNow();
   };
@@ -343,10 +379,11 @@ TargetLayoutResult buildTargetLayout(const Layout& src, const IndexedMesh& targe
                            "tracing the base domain on the target"))
         return cancelled();
       advanced = true;
-      force = false;
+      force = walled = false;
     }
     if (!advanced) {
-      if (!force) {
+      if (!force || !walled) {
+        walled = force;
         force = true;
         continue;
       }

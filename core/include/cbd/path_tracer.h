@@ -35,8 +35,10 @@ struct FaceFilter {
   int a = -1, b = -1;
   const std::vector<int>* group = nullptr;
   const std::vector<char>* groupAllowed = nullptr;
+  const std::vector<char>* walls = nullptr;  ///< faces marked non-zero are closed (indices past its end are open)
   bool allows(int f) const {
     if (label && (*label)[f] != a && (*label)[f] != b) return false;
+    if (walls && f < static_cast<int>(walls->size()) && (*walls)[f]) return false;
     if (!group) return true;
     const int g = (*group)[f];
     return g >= 0 && (*groupAllowed)[g];

@@ -20,6 +20,9 @@
 /// surfaces have the same boundaries, edge for edge, and the same anchors inside). A path is
 /// searched first inside the two anchors' target clusters (fast), then in growing rings of
 /// neighbouring clusters (paths stay local, so they do not swirl), then in the whole region.
+/// When no pending edge can be traced (on high genus the shortest path may pass a handle on
+/// another side than the source's, with the same anchors on each side), a refused edge is traced
+/// again with the faces its refused paths ran through closed (`closedCorridorRounds`).
 
 #include <string>
 #include <vector>
@@ -43,6 +46,11 @@ struct TargetLayoutOptions {
   /// patches): trace its paths and stop there, `layout` without patches. Its regions then match
   /// the source's, signature for signature (no blocking), which is what anchor_pairs.h needs.
   bool partial = false;
+  /// The last resort before failing, when no pending edge can be traced: an edge whose shortest
+  /// path is refused by blocking is traced again with the faces its refused paths ran through
+  /// closed (so the next path passes the region's handles on another side), at most this many
+  /// times per edge. 0: fail at once. Layouts that complete without it are not changed by it.
+  int closedCorridorRounds = 6;
 };
 
 /// Result of `buildTargetLayout`.
@@ -56,6 +64,7 @@ struct TargetLayoutResult {
                                   ///< anchor, or no valid path yet)
   int waitedForPassedAnchors = 0; ///< edges postponed at least once to wait for an anchor they pass
   int rejectedPaths = 0;          ///< traced paths undone because they blocked (region mismatch)
+  int pastClosedCorridors = 0;    ///< paths found only with refused paths' corridors closed
   double voronoiSeconds = 0.0;
   double layoutSeconds = 0.0;
 };
