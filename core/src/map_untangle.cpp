@@ -602,10 +602,8 @@ MapUntangleResult untangleOnce(const IndexedMesh& S, const IndexedMesh& T, const
 /// flipped by the metrics' test. Candidates: half way to the mean-value average of the
 /// neighbours' images, and steps of one mean image edge down to a thousandth of it (halving)
 /// in the tangent plane along the steepest descent of that product (else along the bisector of
-/// the two metrics' steepest descents); the candidate that lowers the objective most is kept
-/// (the first that lowered it at all, as this did before, ends on camel -> diplodocus-25 at
-/// E_ang 0.382 / 0.379 for greedy / Voronoi C, the best at 0.363 / 0.356, at two to three
-/// times the polish's time).
+/// the two metrics' steepest descents); the candidate that lowers the objective most is kept,
+/// not the first that lowers it at all, which settles in a worse local minimum.
 /// Only vertices next to a move are visited again. Returns the number of accepted moves.
 int polishMap(const IndexedMesh& S, const IndexedMesh& T, const SurfaceWalker& walker, const Stars& stars,
               const TargetNormals& targetNormals, const std::vector<char>& fixed, std::vector<FacePoint>& onTarget,
@@ -792,8 +790,7 @@ int polishMap(const IndexedMesh& S, const IndexedMesh& T, const SurfaceWalker& w
 /// fit the vertices round the disk that stay, and put on the target by straight walks from a's
 /// image. The disk holds only vertices nearer (in rings) to a than to any other fixed vertex:
 /// another anchor and its own neighbourhood stay where they are, so a restart never tears an
-/// anchor's star off that anchor's image (camel -> diplodocus-70: anchor 1527, 4 rings from the
-/// anchor restarted, had its fan stretched 8-fold). False (nothing moved) when `rings` < 1 or
+/// anchor's star off that anchor's image. False (nothing moved) when `rings` < 1 or
 /// the disk holds an unmapped vertex.
 bool reembedStar(const IndexedMesh& S, const Stars& stars, const SurfaceWalker& walker, const std::vector<char>& fixed,
                  int a, int rings, std::vector<FacePoint>& onTarget, std::vector<Vec3>& image) {

@@ -9,8 +9,7 @@
 /// anchor has a path of its own on the target (`waitForPassedAnchors`): then the cyclic order
 /// and region checks at that anchor decide on which side the path passes it. Traced before,
 /// it may pass on the other side, and the paths traced later round that anchor keep their
-/// cyclic order only by winding round the limb (man -> homer-70: the right forearm, a path
-/// 3.2 times its source length, before this rule; 1.0 after).
+/// cyclic order only by winding round the limb.
 ///
 /// Every path obeys the constraints of Praun et al. 2001 that make the two layouts isomorphic:
 /// no crossing (face regions, as on the source); cyclic order (it leaves both anchors inside the
