@@ -234,8 +234,8 @@ std::vector<std::string> layoutLines(const LayoutPair& p) {
                              p.reversed ? "traced on the source" : "target", p.targetStats.embeddedInClusters,
                              p.targetStats.embeddedInRegion, p.detour));
     if (p.targetStats.pastClosedCorridors > 0)
-      lines.push_back(format("        %d path%s found only past the corridors of refused ones (a handle passed on "
-                             "the source's side)",
+      lines.push_back(format("        %d path%s found only with the corridors of refused ones closed (passing a "
+                             "handle on another side than the shortest path)",
                              p.targetStats.pastClosedCorridors, plural(p.targetStats.pastClosedCorridors)));
     if (p.reversed)
       lines.push_back(format("        (the layout traced from the source's diagram detoured by %.2f: this one comes "

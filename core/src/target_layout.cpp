@@ -291,8 +291,8 @@ TargetLayoutResult buildTargetLayout(const Layout& src, const IndexedMesh& targe
       tracer.rollback(chain, e, before);
       tgtRegions.undo();
       ++r.rejectedPaths;
-      lastReason = walled ? "every path tried, also past the corridors of the refused ones, would enclose other "
-                            "anchors than on the source (blocking)"
+      lastReason = walled ? "every path tried, also with the corridors of the refused ones closed, would enclose "
+                            "other anchors than on the source (blocking)"
                           : "its shortest path would enclose other anchors than on the source (blocking)";
       if (!wholeRegion) continue;
       if (corridor.empty()) break;
@@ -382,7 +382,7 @@ TargetLayoutResult buildTargetLayout(const Layout& src, const IndexedMesh& targe
       force = walled = false;
     }
     if (!advanced) {
-      if (!force || !walled) {
+      if (!force || (!walled && options.closedCorridorRounds > 0)) {
         walled = force;
         force = true;
         continue;
