@@ -43,13 +43,6 @@ IndexedMesh femur() {
   return toIndexed(m);
 }
 
-/// A smooth warp on the femur's scale (about 1 across): turned, scaled by 1.5, bumped by 3 %.
-Vec3 warp(const Vec3& x) {
-  const Eigen::Matrix3d R = Eigen::AngleAxisd(0.7, Vec3::UnitZ()).toRotationMatrix();
-  const double bump = 1.0 + 0.03 * std::sin(10 * x.x()) * std::cos(6.7 * x.y());
-  return 1.5 * bump * (R * x);
-}
-
 }  // namespace
 
 TEST(RegionDistances, MeasureFromThePathsAroundAPatch) {
@@ -130,7 +123,7 @@ TEST(AnchorPairsOnRealMeshes, FemurMapsOntoAWarpedCopy) {
   const IndexedMesh s = femur();
   if (s.vertexCount() == 0) GTEST_SKIP() << "scripts/setup.sh unpacks " << CBD_CGAL_MESHES;
   IndexedMesh t = s;
-  for (Vec3& x : t.positions) x = warp(x);
+  for (Vec3& x : t.positions) x = fx::warpedCopyPoint(x);
   const int chi = closedEulerCharacteristic(s);
   const double diagonal = boundingBoxDiagonal(t);
   // One count, where several pairs are added: the sanitizer build runs this map slowly.

@@ -221,8 +221,7 @@ TEST(TargetLayoutOnRealMeshes, RefusedPathsOnHighGenusAreRetriedPastTheirCorrido
     GTEST_SKIP() << "scripts/setup.sh unpacks " << CBD_CGAL_MESHES;
   const IndexedMesh s = toIndexed(loaded);
   IndexedMesh t = s;
-  const Eigen::Matrix3d R = Eigen::AngleAxisd(0.7, Vec3::UnitZ()).toRotationMatrix();
-  for (Vec3& x : t.positions) x = 1.5 * (1.0 + 0.03 * std::sin(10 * x.x()) * std::cos(6.7 * x.y())) * (R * x);
+  for (Vec3& x : t.positions) x = fx::warpedCopyPoint(x);
   const int chi = validateMesh(s, "turbine").eulerCharacteristic;
   ASSERT_EQ(chi, -20);
   for (int seed : {2, 3}) {

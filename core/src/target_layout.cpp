@@ -150,6 +150,16 @@ TargetLayoutResult buildTargetLayout(const Layout& src, const IndexedMesh& targe
     int before = -1, after = -1;
     std::vector<int> faces;
   };
+  auto facesAround = [&](int v) {
+    std::vector<int> faces;
+    const int h0 = L.mesh.outgoing(v);
+    int h = h0;
+    do {
+      faces.push_back(L.mesh.face(h));
+      h = L.mesh.rotateCCW(h);
+    } while (h != h0);
+    return faces;
+  };
   auto sectorAt = [&](int e, int a, int occurrence) {
     Sector s;
     const auto& rot = src.rotation[a];
@@ -168,12 +178,7 @@ TargetLayoutResult buildTargetLayout(const Layout& src, const IndexedMesh& targe
     const RefinedMesh& m = L.mesh;
     const int v = anchors[a];
     if (s.before < 0) {  // nothing embedded at a yet: every face around it
-      const int h0 = m.outgoing(v);
-      int h = h0;
-      do {
-        s.faces.push_back(m.face(h));
-        h = m.rotateCCW(h);
-      } while (h != h0);
+      s.faces = facesAround(v);
       return s;
     }
     const int hb = leavingHalfedge(m, L.edges[s.before].vertices, v);
@@ -301,14 +306,8 @@ TargetLayoutResult buildTargetLayout(const Layout& src, const IndexedMesh& targe
       walls.resize(L.mesh.faceCount(), 0);
       for (int f : corridor)
         if (f >= 0 && f < L.mesh.faceCount()) walls[f] = 1;
-      for (const int a : {anchors[se.a], anchors[se.b]}) {
-        const int h0 = L.mesh.outgoing(a);
-        int h = h0;
-        do {
-          walls[L.mesh.face(h)] = 0;
-          h = L.mesh.rotateCCW(h);
-        } while (h != h0);
-      }
+      for (const int a : {anchors[se.a], anchors[se.b]})
+        for (int f : facesAround(a)) walls[f] = 0;
       ++wallRounds;
     }
     return notNow();

@@ -265,6 +265,12 @@ Vec3 pointOn(const IndexedMesh& m, const FacePoint& p) {
   return p.bary[0] * m.positions[t[0]] + p.bary[1] * m.positions[t[1]] + p.bary[2] * m.positions[t[2]];
 }
 
+Vec3 warpedCopyPoint(const Vec3& x) {
+  const Eigen::Matrix3d R = Eigen::AngleAxisd(0.7, Vec3::UnitZ()).toRotationMatrix();
+  const double bump = 1.0 + 0.03 * std::sin(10 * x.x()) * std::cos(6.7 * x.y());
+  return 1.5 * bump * (R * x);
+}
+
 int eulerCharacteristic(const IndexedMesh& mesh) {
   std::set<std::pair<int, int>> edges;
   std::set<int> verts;

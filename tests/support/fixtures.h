@@ -67,6 +67,10 @@ void identityMap(const IndexedMesh& mesh, std::vector<FacePoint>& on, std::vecto
 /// The point of a mesh a FacePoint names.
 Vec3 pointOn(const IndexedMesh& mesh, const FacePoint& p);
 
+/// A smooth warp on the scale of the CGAL meshes (about 1 across): turned by 0.7 about z, scaled
+/// by 1.5, bumped by 3 %; a mesh and its warped copy have the known correspondence v -> v.
+Vec3 warpedCopyPoint(const Vec3& x);
+
 /// Euler characteristic V - E + F over referenced vertices.
 int eulerCharacteristic(const IndexedMesh& mesh);
 
