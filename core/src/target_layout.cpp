@@ -14,6 +14,25 @@ double seconds(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
+/// How the regions beside a refused target path (`got`) differ from those beside its source
+/// path (`want`), both from one region: as the end of "its path ...". Pieces are paired by their
+/// boundaries, which the two paths' sectors fix alike.
+std::string refusal(const std::vector<RegionSignature>& want, const std::vector<RegionSignature>& got) {
+  if (want.size() != got.size())
+    return want.size() == 1 ? "would cut its region in two, where the source's path runs round a handle of it"
+                            : "would run round a handle of its region, where the source's path cuts it in two";
+  bool anchors = false, handles = false;
+  for (const RegionSignature& w : want) {
+    const auto g = std::find_if(got.begin(), got.end(), [&](const RegionSignature& x) { return x.loops == w.loops; });
+    if (g == got.end()) return "would give its regions other boundaries than on the source";
+    anchors = anchors || g->inside != w.inside;
+    handles = handles || g->euler != w.euler;
+  }
+  if (anchors) return "would enclose other anchors than on the source";
+  if (handles) return "would leave a handle of its region on the other side of it than on the source";
+  return "would give its regions other boundaries than on the source";
+}
+
 }  // namespace
 
 Status checkIsomorphic(const Layout& s, const Layout& t) {
@@ -214,7 +233,7 @@ TargetLayoutResult buildTargetLayout(const Layout& src, const IndexedMesh& targe
   RegionTracker srcRegions(src.mesh, srcPartial, srcAnchorOf, src.edges);
   RegionTracker tgtRegions(L.mesh, tracer.edgePath(), tgtAnchorOf, src.edges);
   std::vector<char> inRing(na, 0);
-  std::string lastReason;
+  std::vector<std::string> reason(ne);  // why each edge was last not traced
   // Last resort before failing (nothing else can be traced): an edge whose shortest path in its
   // region is refused is traced again with the faces its refused paths ran through closed, so
   // that the next path passes the region's handles on another side (another homotopy class
@@ -243,7 +262,7 @@ TargetLayoutResult buildTargetLayout(const Layout& src, const IndexedMesh& targe
     const Sector sa = sectorAt(e, se.a, 0), sb = sectorAt(e, se.b, 0);
     const int region = tgtRegions.regionOf(sa.faces.front());
     if (tgtRegions.regionOf(sb.faces.front()) != region) {
-      lastReason = "its two sectors lie in different regions of the partial target layout";
+      reason[e] = "its two sectors lie in different regions of the partial target layout";
       return notNow();
     }
     std::vector<char> walls;
@@ -267,7 +286,7 @@ TargetLayoutResult buildTargetLayout(const Layout& src, const IndexedMesh& targe
       TracedPath tp = tracer.trace(q);
       if (!tp.found) {
         if (wallRounds == 0)
-          lastReason = attempt == 0 ? "no path inside the two target clusters" : "no path inside its region";
+          reason[e] = attempt == 0 ? "no path inside the two target clusters" : "no path inside its region";
         if (wholeRegion) break;
         continue;
       }
@@ -278,7 +297,8 @@ TargetLayoutResult buildTargetLayout(const Layout& src, const IndexedMesh& targe
         return -1;
       }
       refreshTargetAnchorOf();
-      if (tgtRegions.add(chain, region) == want) {
+      const std::vector<RegionSignature> got = tgtRegions.add(chain, region);
+      if (got == want) {
         L.edges[e].vertices = std::move(chain);
         L.edges[e].length = tp.length;
         (attempt == 0 ? r.embeddedInClusters : r.embeddedInRegion)++;
@@ -296,9 +316,10 @@ TargetLayoutResult buildTargetLayout(const Layout& src, const IndexedMesh& targe
       tracer.rollback(chain, e, before);
       tgtRegions.undo();
       ++r.rejectedPaths;
-      lastReason = walled ? "every path tried, also with the corridors of the refused ones closed, would enclose "
-                            "other anchors than on the source (blocking)"
-                          : "its shortest path would enclose other anchors than on the source (blocking)";
+      reason[e] = (walled ? "every path tried, also with the corridors of the refused ones closed, was refused "
+                             "(blocking): the last one "
+                           : "its shortest path ") +
+                   refusal(want, got) + (walled ? "" : " (blocking)");
       if (!wholeRegion) continue;
       if (corridor.empty()) break;
       // After the rollback the faces the path split are back under their own indices (the
@@ -387,11 +408,12 @@ TargetLayoutResult buildTargetLayout(const Layout& src, const IndexedMesh& targe
         continue;
       }
       const LayoutEdge& se = src.edges[pending.front()];
+      const int stuck = pending.front();
       r.status = Status::error(ErrorCode::LayoutFailed,
-                               "the target layout cannot be completed: edge " + std::to_string(pending.front()) +
+                               "the target layout cannot be completed: edge " + std::to_string(stuck) +
                                     " between anchors " + anchorLabel(options.anchorNames, se.a) + " and " +
                                    anchorLabel(options.anchorNames, se.b) +
-                                   " (" + std::to_string(pending.size()) + " edges left): " + lastReason +
+                                   " (" + std::to_string(pending.size()) + " edges left): " + reason[stuck] +
                                    "; check that these anchors correspond, or add anchors nearby");
       return r;
     }
