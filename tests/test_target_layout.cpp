@@ -230,13 +230,16 @@ TEST(TargetLayoutOnRealMeshes, RefusedPathsOnHighGenusAreRetriedPastTheirCorrido
     ASSERT_TRUE(src.status.ok()) << seed << ": " << src.status.message;
     TargetLayoutOptions without;
     without.closedCorridorRounds = 0;
+    without.order = TargetLayoutOptions::Order::Procedure1;
     const TargetLayoutResult refused = buildTargetLayout(src.layout, t, a, without);
     EXPECT_EQ(refused.status.code, ErrorCode::LayoutFailed) << seed;
     // The refusal names what differs: where the handle lies, not the anchors (they agree).
     EXPECT_NE(refused.status.message.find("blocking"), std::string::npos) << refused.status.message;
     EXPECT_NE(refused.status.message.find("handle"), std::string::npos) << refused.status.message;
     EXPECT_EQ(refused.status.message.find("anchors than"), std::string::npos) << refused.status.message;
-    const TargetLayoutResult tl = buildTargetLayout(src.layout, t, a);
+    TargetLayoutOptions procedure1;
+    procedure1.order = TargetLayoutOptions::Order::Procedure1;
+    const TargetLayoutResult tl = buildTargetLayout(src.layout, t, a, procedure1);
     ASSERT_TRUE(tl.status.ok()) << seed << ": " << tl.status.message;
     EXPECT_GT(tl.pastClosedCorridors, 0) << seed;
     EXPECT_TRUE(validateLayout(tl.layout, chi).status.ok()) << seed;
@@ -249,6 +252,75 @@ TEST(TargetLayoutOnRealMeshes, RefusedPathsOnHighGenusAreRetriedPastTheirCorrido
     std::sort(ratio.begin(), ratio.end());
     EXPECT_NEAR(ratio[ratio.size() / 2], 1.0, 0.15) << seed;
     EXPECT_LT(ratio.back(), 3.0) << seed;
+  }
+}
+
+// Each target path's length over its source path's, sorted.
+std::vector<double> sortedLengthRatios(const Layout& source, const Layout& target, double scale) {
+  std::vector<double> ratio;
+  for (size_t e = 0; e < source.edges.size(); ++e) ratio.push_back(target.edges[e].length / (scale * source.edges[e].length));
+  std::sort(ratio.begin(), ratio.end());
+  return ratio;
+}
+
+TEST(TargetLayoutOnRealMeshes, SourceOrderReproducesHighGenusLayoutsOnTheirOwnSurface) {
+  // turbine.off (genus 11), 12 anchors by farthest-point sampling: for these seeds Procedure 1's
+  // order, traced onto turbine itself, passes a blade's handle on the other side than the source
+  // and gets stuck. In the source's order every path is traced into regions that match those
+  // its source path was traced in, with the source's own query: the layout comes back, path for
+  // path, up to the finer mesh the other paths leave.
+  const std::string path = std::string(CBD_CGAL_MESHES) + "/turbine.off";
+  Mesh loaded;
+  if (!std::filesystem::exists(path) || !loadMesh(path, loaded).status.ok())
+    GTEST_SKIP() << "scripts/setup.sh unpacks " << CBD_CGAL_MESHES;
+  const IndexedMesh s = toIndexed(loaded);
+  const int chi = validateMesh(s, "turbine").eulerCharacteristic;
+  TargetLayoutOptions sourceOrder;
+  sourceOrder.order = TargetLayoutOptions::Order::Source;
+  for (int seed : {1, 5, 7, 10, 11}) {
+    const std::vector<int> a = farthestPointSampling(s, 12, seed);
+    const SourceLayoutResult src = buildSourceLayout(s, a);
+    ASSERT_TRUE(src.status.ok()) << seed << ": " << src.status.message;
+    const TargetLayoutResult tl = buildTargetLayout(src.layout, s, a, sourceOrder);
+    ASSERT_TRUE(tl.status.ok()) << seed << ": " << tl.status.message;
+    EXPECT_TRUE(tl.inSourceOrder);
+    EXPECT_EQ(tl.rejectedPaths, 0) << seed;
+    EXPECT_TRUE(validateLayout(tl.layout, chi).status.ok()) << seed;
+    EXPECT_TRUE(checkIsomorphic(src.layout, tl.layout).ok()) << seed;
+    const std::vector<double> ratio = sortedLengthRatios(src.layout, tl.layout, 1.0);
+    EXPECT_GT(ratio.front(), 0.9) << seed;
+    EXPECT_LT(ratio.back(), 1.1) << seed;
+  }
+}
+
+TEST(TargetLayoutOnRealMeshes, StuckProcedure1FallsBackToTheSourceOrder) {
+  // turbine.off onto a smoothly warped copy of itself (scaled by 1.5 with bumps): for these
+  // seeds Procedure 1's order gets stuck; the source's order completes with no path winding
+  // round a blade (the longest ratio stays near the scale).
+  const std::string path = std::string(CBD_CGAL_MESHES) + "/turbine.off";
+  Mesh loaded;
+  if (!std::filesystem::exists(path) || !loadMesh(path, loaded).status.ok())
+    GTEST_SKIP() << "scripts/setup.sh unpacks " << CBD_CGAL_MESHES;
+  const IndexedMesh s = toIndexed(loaded);
+  IndexedMesh t = s;
+  for (Vec3& x : t.positions) x = fx::warpedCopyPoint(x);
+  const int chi = validateMesh(s, "turbine").eulerCharacteristic;
+  for (int seed : {1, 5, 6, 7, 10}) {
+    const std::vector<int> a = farthestPointSampling(s, 12, seed);
+    const SourceLayoutResult src = buildSourceLayout(s, a);
+    ASSERT_TRUE(src.status.ok()) << seed << ": " << src.status.message;
+    // The default order, Procedure 1 then the source's, only where Procedure 1 fails fast.
+    TargetLayoutOptions o;
+    if (seed != 6) o.order = TargetLayoutOptions::Order::Source;
+    const TargetLayoutResult tl = buildTargetLayout(src.layout, t, a, o);
+    ASSERT_TRUE(tl.status.ok()) << seed << ": " << tl.status.message;
+    EXPECT_TRUE(tl.inSourceOrder) << seed;
+    if (seed == 6) EXPECT_NE(tl.procedure1Failure.find("(blocking)"), std::string::npos) << tl.procedure1Failure;
+    EXPECT_TRUE(validateLayout(tl.layout, chi).status.ok()) << seed;
+    EXPECT_TRUE(checkIsomorphic(src.layout, tl.layout).ok()) << seed;
+    const std::vector<double> ratio = sortedLengthRatios(src.layout, tl.layout, 1.5);
+    EXPECT_NEAR(ratio[ratio.size() / 2], 1.0, 0.1) << seed;
+    EXPECT_LT(ratio.back(), 2.5) << seed;
   }
 }
 

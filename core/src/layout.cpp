@@ -562,6 +562,19 @@ Status assemblePatches(Layout& layout) {
   return Status::success();
 }
 
+double lengthDetour(const Layout& source, const Layout& target) {
+  std::vector<double> ratio;
+  for (size_t e = 0; e < source.edges.size() && e < target.edges.size(); ++e)
+    if (source.edges[e].length > 0 && target.edges[e].length > 0) ratio.push_back(target.edges[e].length / source.edges[e].length);
+  if (ratio.empty()) return 1.0;
+  std::vector<double> sorted = ratio;
+  std::nth_element(sorted.begin(), sorted.begin() + sorted.size() / 2, sorted.end());
+  const double median = sorted[sorted.size() / 2];
+  double sum = 0;
+  for (double x : ratio) sum += std::max(x / median, median / x);
+  return sum / static_cast<double>(ratio.size());
+}
+
 LayoutCheck validateLayout(const Layout& layout, int expectedEuler) {
   LayoutCheck c;
   auto fail = [&](const std::string& what) {

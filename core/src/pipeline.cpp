@@ -32,18 +32,6 @@ Status validate(const CrossParameterizationOptions& o) {
   return Status::success();
 }
 
-double lengthDetour(const Layout& source, const Layout& target) {
-  std::vector<double> ratio;
-  for (size_t e = 0; e < source.edges.size() && e < target.edges.size(); ++e)
-    if (source.edges[e].length > 0 && target.edges[e].length > 0) ratio.push_back(target.edges[e].length / source.edges[e].length);
-  if (ratio.empty()) return 1.0;
-  std::vector<double> sorted = ratio;
-  std::nth_element(sorted.begin(), sorted.begin() + sorted.size() / 2, sorted.end());
-  const double median = sorted[sorted.size() / 2];
-  double sum = 0;
-  for (double x : ratio) sum += std::max(x / median, median / x);
-  return sum / static_cast<double>(ratio.size());
-}
 
 namespace {
 
@@ -104,6 +92,9 @@ LayoutPair voronoiLayouts(const IndexedMesh& from, const std::vector<int>& fa, c
     p.sameSurface = true;
     return p;
   }
+  // On a surface with handles Procedure 1's order may complete a layout whose paths wind round
+  // a handle; the source's order then detours less (target_layout.h). Genus 0 keeps Procedure 1.
+  if (euler < 2) to.order = TargetLayoutOptions::Order::Shorter;
   p.targetStats = buildTargetLayout(p.sourceStats.layout, onto, targetAnchors, to, progress.part(0.5, 1.0));
   p.times.voronoi += p.targetStats.voronoiSeconds;
   p.times.targetLayout += p.targetStats.layoutSeconds;

@@ -87,7 +87,10 @@ Json toJson(const LayoutPair& p) {
                    {"postponements", p.targetStats.postponements},
                    {"waited_for_passed_anchors", p.targetStats.waitedForPassedAnchors},
                    {"rejected_paths", p.targetStats.rejectedPaths},
-                   {"past_closed_corridors", p.targetStats.pastClosedCorridors}};
+                   {"past_closed_corridors", p.targetStats.pastClosedCorridors},
+                   {"order", p.targetStats.inSourceOrder ? "source" : "procedure1"}};
+    if (!p.targetStats.procedure1Failure.empty()) l["target"]["procedure1_failure"] = p.targetStats.procedure1Failure;
+    if (p.targetStats.procedure1Detour > 0) l["target"]["procedure1_detour"] = p.targetStats.procedure1Detour;
   } else {
     const auto& g = p.greedyStats;
     l["greedy"] = {{"candidates", g.candidates}, {"tried", g.tried},         {"accepted", g.accepted},
@@ -233,6 +236,11 @@ std::vector<std::string> layoutLines(const LayoutPair& p) {
       lines.push_back(format("        %s: %d paths inside the two clusters, %d in the whole region; detour %.2f",
                              p.reversed ? "traced on the source" : "target", p.targetStats.embeddedInClusters,
                              p.targetStats.embeddedInRegion, p.detour));
+    if (p.targetStats.inSourceOrder && !p.targetStats.procedure1Failure.empty())
+      lines.push_back("        traced in the source's order: Procedure 1's got stuck at " + p.targetStats.procedure1Failure);
+    else if (p.targetStats.inSourceOrder && p.targetStats.procedure1Detour > 0)
+      lines.push_back(format("        traced in the source's order: Procedure 1's paths detoured by %.2f",
+                             p.targetStats.procedure1Detour));
     if (p.targetStats.pastClosedCorridors > 0)
       lines.push_back(format("        %d path%s found only with the corridors of refused ones closed (passing a "
                              "handle on another side than the shortest path)",

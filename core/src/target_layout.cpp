@@ -91,9 +91,12 @@ Status alignPatches(const Layout& src, Layout& L) {
   return Status::success();
 }
 
-TargetLayoutResult buildTargetLayout(const Layout& src, const IndexedMesh& target, const std::vector<int>& anchors,
-                                     const TargetLayoutOptions& options, const Progress& progress) {
+namespace {
+
+TargetLayoutResult traceTarget(const Layout& src, const IndexedMesh& target, const std::vector<int>& anchors,
+                               const TargetLayoutOptions& options, bool sourceOrder, const Progress& progress) {
   TargetLayoutResult r;
+  r.inSourceOrder = sourceOrder;
   auto cancelled = [&] {
     r.status = Status::error(ErrorCode::Cancelled, "cancelled while tracing the target layout");
     return r;
@@ -120,6 +123,7 @@ TargetLayoutResult buildTargetLayout(const Layout& src, const IndexedMesh& targe
   t0 = std::chrono::steady_clock::now();
   PathTracer tracer(L.mesh, options.edgeNodes);
   tracer.faceLabel() = std::move(clusters);
+  tracer.edgeLabel() = r.cuts.edgeCut;
   for (int v : anchors) tracer.setAnchor(v, true);
 
   const int ne = static_cast<int>(src.edges.size());
@@ -133,6 +137,9 @@ TargetLayoutResult buildTargetLayout(const Layout& src, const IndexedMesh& targe
   std::map<std::pair<int, int>, int> sourceLinks, targetCuts;
   for (const LayoutEdge& e : src.edges) ++sourceLinks[std::minmax(e.a, e.b)];
   for (const Cut& c : r.cuts.cuts) ++targetCuts[{c.i, c.j}];
+  // For the source's order: the target cuts of each pair.
+  std::map<std::pair<int, int>, std::vector<int>> targetCutsOf;
+  for (int c = 0; c < static_cast<int>(r.cuts.cuts.size()); ++c) targetCutsOf[{r.cuts.cuts[c].i, r.cuts.cuts[c].j}].push_back(c);
   auto group = [&](int e) {
     const auto key = std::minmax(src.edges[e].a, src.edges[e].b);
     if (sourceLinks[key] > 1) return 2;  // (c) multiple linkage
@@ -143,10 +150,11 @@ TargetLayoutResult buildTargetLayout(const Layout& src, const IndexedMesh& targe
   };
   std::vector<int> pending(ne);
   std::iota(pending.begin(), pending.end(), 0);
-  std::stable_sort(pending.begin(), pending.end(), [&](int x, int y) {
-    const int gx = group(x), gy = group(y);
-    return gx != gy ? gx < gy : src.edges[x].length < src.edges[y].length;
-  });
+  if (!sourceOrder)
+    std::stable_sort(pending.begin(), pending.end(), [&](int x, int y) {
+      const int gx = group(x), gy = group(y);
+      return gx != gy ? gx < gy : src.edges[x].length < src.edges[y].length;
+    });
 
   // The source's partial layout: its refined mesh with only the embedded edges as walls.
   std::vector<int> srcPartial(src.mesh.edgeCount(), -1);
@@ -234,6 +242,55 @@ TargetLayoutResult buildTargetLayout(const Layout& src, const IndexedMesh& targe
   RegionTracker tgtRegions(L.mesh, tracer.edgePath(), tgtAnchorOf, src.edges);
   std::vector<char> inRing(na, 0);
   std::vector<std::string> reason(ne);  // why each edge was last not traced
+  // The anchors whose clusters each source path runs through besides its own two: the faces on
+  // both sides of the path, by their source cluster.
+  std::vector<std::vector<int>> passedAnchors(ne);
+  if ((options.waitForPassedAnchors || sourceOrder) && src.faceCluster.size() == static_cast<size_t>(src.mesh.faceCount())) {
+    for (int e = 0; e < ne; ++e) {
+      const LayoutEdge& se = src.edges[e];
+      std::set<int> passed;
+      for (size_t k = 0; k + 1 < se.vertices.size(); ++k) {
+        const int h = src.mesh.findHalfedge(se.vertices[k], se.vertices[k + 1]);
+        if (h < 0) continue;  // not a layout validateLayout accepts; the tracing reports it
+        for (const int f : {src.mesh.face(h), src.mesh.face(RefinedMesh::twin(h))}) {
+          if (f < 0) continue;
+          const int c = src.faceCluster[f];
+          if (c >= 0 && c < na && c != se.a && c != se.b) passed.insert(c);
+        }
+      }
+      passedAnchors[e].assign(passed.begin(), passed.end());
+    }
+  }
+  // With the source's order, the anchors whose clusters lie within two rings of faces of each
+  // source path (a superset of those it passes, when they differ).
+  std::vector<std::vector<int>> nearAnchors(ne);
+  if (sourceOrder && src.faceCluster.size() == static_cast<size_t>(src.mesh.faceCount())) {
+    const RefinedMesh& m = src.mesh;
+    std::vector<char> seen(m.vertexCount(), 0);
+    for (int e = 0; e < ne; ++e) {
+      std::vector<int> ring = src.edges[e].vertices, touched = ring;
+      for (int v : ring) seen[v] = 1;
+      std::set<int> clusters;
+      for (int k = 0; k < 2; ++k) {
+        std::vector<int> next;
+        for (int v : ring) {
+          const int h0 = m.outgoing(v);
+          int h = h0;
+          do {
+            const int f = m.face(h);
+            const int c = src.faceCluster[f];
+            if (c >= 0 && c < na && c != src.edges[e].a && c != src.edges[e].b) clusters.insert(c);
+            for (int w : m.faceVertices(f))
+              if (!seen[w]) seen[w] = 1, next.push_back(w), touched.push_back(w);
+            h = m.rotateCCW(h);
+          } while (h != h0);
+        }
+        ring = std::move(next);
+      }
+      for (int v : touched) seen[v] = 0;
+      if (clusters.size() > passedAnchors[e].size()) nearAnchors[e].assign(clusters.begin(), clusters.end());
+    }
+  }
   // Last resort before failing (nothing else can be traced): an edge whose shortest path in its
   // region is refused is traced again with the faces its refused paths ran through closed, so
   // that the next path passes the region's handles on another side (another homotopy class
@@ -264,6 +321,76 @@ TargetLayoutResult buildTargetLayout(const Layout& src, const IndexedMesh& targe
     if (tgtRegions.regionOf(sb.faces.front()) != region) {
       reason[e] = "its two sectors lie in different regions of the partial target layout";
       return notNow();
+    }
+    // Source order: the source's query first. A cut path inside the two target clusters,
+    // through one target cut of its pair at a time (the one of the source's rank first); then
+    // any path through the target clusters its source path passes, or near it (two rings of
+    // faces, for a source cut too short to have a target counterpart); then the region.
+    if (sourceOrder) {
+      frontier.clear();
+      // Commit a traced path; keep it when the regions beside it match the source's, else
+      // undo it. 1 kept, 0 refused, -1 internal error.
+      auto keepIfMatching = [&](const TracedPath& tp) -> int {
+        std::vector<int> chain;
+        const PathTracer::Checkpoint before = tracer.checkpoint();
+        if (Status s = tracer.commit(tp, e, chain); !s) {
+          r.status = s;
+          return -1;
+        }
+        refreshTargetAnchorOf();
+        const std::vector<RegionSignature> got = tgtRegions.add(chain, region);
+        if (got == want) {
+          L.edges[e].vertices = std::move(chain);
+          L.edges[e].length = tp.length;
+          ++r.embeddedInClusters;
+          return 1;
+        }
+        tracer.rollback(chain, e, before);
+        tgtRegions.undo();
+        ++r.rejectedPaths;
+        reason[e] = "its path in the source's order " + refusal(want, got) + " (blocking)";
+        return 0;
+      };
+      auto query = [&] {
+        PathQuery q;
+        q.source = anchors[se.a];
+        q.sourceFaces = sa.faces;
+        q.goals.push_back({anchors[se.b], sb.faces, 0});
+        return q;
+      };
+      // The target cuts of the pair, the one of the source cut's rank first, each crossed
+      // alone. When every one is refused, the source path crosses where the two target
+      // clusters do not meet (the diagrams differ there): the paths near it cross none of them.
+      std::vector<int> refusedCuts;
+      if (se.kind == EdgeKind::VoronoiCut) {
+        std::vector<int> cand = targetCutsOf[std::minmax(se.a, se.b)];
+        std::stable_sort(cand.begin(), cand.end(), [&](int x, int y) {
+          return (r.cuts.cuts[x].eta != se.eta) < (r.cuts.cuts[y].eta != se.eta);
+        });
+        for (const int c : cand) {
+          PathQuery q = query();
+          q.filter = {&tracer.faceLabel(), se.a, se.b};
+          for (const int o : cand)
+            if (o != c) q.blockedEdgeLabels.push_back(o);
+          const TracedPath tp = tracer.trace(q);
+          if (tp.found)
+            if (const int k = keepIfMatching(tp); k != 0) return k;
+          refusedCuts.push_back(c);
+        }
+      }
+      for (const std::vector<int>* near : {&passedAnchors[e], &nearAnchors[e]}) {
+        if (near->empty()) continue;
+        for (int c = 0; c < na; ++c) inRing[c] = 0;
+        inRing[se.a] = inRing[se.b] = 1;
+        for (const int c : *near) inRing[c] = 1;
+        PathQuery q = query();
+        q.filter.label = &tgtRegions.labels();
+        q.filter.a = q.filter.b = region;
+        q.filter.group = &tracer.faceLabel(), q.filter.groupAllowed = &inRing;
+        const TracedPath tp = tracer.trace(q);
+        if (!tp.found) continue;
+        if (const int k = keepIfMatching(tp); k != 0) return k;
+      }
     }
     std::vector<char> walls;
     int wallRounds = 0;
@@ -301,7 +428,7 @@ TargetLayoutResult buildTargetLayout(const Layout& src, const IndexedMesh& targe
       if (got == want) {
         L.edges[e].vertices = std::move(chain);
         L.edges[e].length = tp.length;
-        (attempt == 0 ? r.embeddedInClusters : r.embeddedInRegion)++;
+        (attempt == 0 && !sourceOrder ? r.embeddedInClusters : r.embeddedInRegion)++;
         r.pastClosedCorridors += wallRounds > 0;
         return 1;
       }
@@ -334,25 +461,6 @@ TargetLayoutResult buildTargetLayout(const Layout& src, const IndexedMesh& targe
     return notNow();
   };
 
-  // The anchors whose clusters each source path runs through besides its own two: the faces on
-  // both sides of the path, by their source cluster.
-  std::vector<std::vector<int>> passedAnchors(ne);
-  if (options.waitForPassedAnchors && src.faceCluster.size() == static_cast<size_t>(src.mesh.faceCount())) {
-    for (int e = 0; e < ne; ++e) {
-      const LayoutEdge& se = src.edges[e];
-      std::set<int> passed;
-      for (size_t k = 0; k + 1 < se.vertices.size(); ++k) {
-        const int h = src.mesh.findHalfedge(se.vertices[k], se.vertices[k + 1]);
-        if (h < 0) continue;  // not a layout validateLayout accepts; the tracing reports it
-        for (const int f : {src.mesh.face(h), src.mesh.face(RefinedMesh::twin(h))}) {
-          if (f < 0) continue;
-          const int c = src.faceCluster[f];
-          if (c >= 0 && c < na && c != se.a && c != se.b) passed.insert(c);
-        }
-      }
-      passedAnchors[e].assign(passed.begin(), passed.end());
-    }
-  }
   auto hasTargetPath = [&](int a) {
     for (const int x : src.rotation[a])
       if (embedded[x]) return true;
@@ -370,13 +478,13 @@ TargetLayoutResult buildTargetLayout(const Layout& src, const IndexedMesh& targe
     bool advanced = false;
     for (size_t k = 0; k < pending.size();) {
       const int e = pending[k];
-      if (!force && waitsForPassedAnchor(e)) {
+      if (!force && !sourceOrder && waitsForPassedAnchor(e)) {
         ++r.postponements;
         if (!waited[e]) waited[e] = 1, ++r.waitedForPassedAnchors;
         ++k;
         continue;
       }
-      if (!force && ambiguous(e)) {
+      if (!force && !sourceOrder && ambiguous(e)) {
         ++r.postponements;
         ++k;
         continue;
@@ -407,14 +515,13 @@ TargetLayoutResult buildTargetLayout(const Layout& src, const IndexedMesh& targe
         force = true;
         continue;
       }
-      const LayoutEdge& se = src.edges[pending.front()];
+      // The message says where this order got stuck; buildTargetLayout frames it.
       const int stuck = pending.front();
-      r.status = Status::error(ErrorCode::LayoutFailed,
-                               "the target layout cannot be completed: edge " + std::to_string(stuck) +
-                                    " between anchors " + anchorLabel(options.anchorNames, se.a) + " and " +
-                                   anchorLabel(options.anchorNames, se.b) +
-                                   " (" + std::to_string(pending.size()) + " edges left): " + reason[stuck] +
-                                   "; check that these anchors correspond, or add anchors nearby");
+      const LayoutEdge& se = src.edges[stuck];
+      r.status = Status::error(ErrorCode::LayoutFailed, "edge " + std::to_string(stuck) + " between anchors " +
+                                                            anchorLabel(options.anchorNames, se.a) + " and " +
+                                                            anchorLabel(options.anchorNames, se.b) + " (" +
+                                                            std::to_string(pending.size()) + " edges left): " + reason[stuck]);
       return r;
     }
   }
@@ -439,6 +546,51 @@ TargetLayoutResult buildTargetLayout(const Layout& src, const IndexedMesh& targe
   }
   r.layoutSeconds = seconds(t0);
   return r;
+}
+
+}  // namespace
+
+TargetLayoutResult buildTargetLayout(const Layout& src, const IndexedMesh& target, const std::vector<int>& anchors,
+                                     const TargetLayoutOptions& options, const Progress& progress) {
+  using Order = TargetLayoutOptions::Order;
+  const std::string advice = "; check that these anchors correspond, or add anchors nearby";
+  auto run = [&](bool sourceOrder) {
+    const auto t0 = std::chrono::steady_clock::now();
+    TargetLayoutResult x = traceTarget(src, target, anchors, options, sourceOrder, progress);
+    x.layoutSeconds = seconds(t0) - x.voronoiSeconds;
+    return x;
+  };
+  const bool p1First = options.order != Order::Source;
+  TargetLayoutResult first = run(!p1First);
+  const bool both = options.order == Order::Procedure1ThenSource || options.order == Order::Shorter;
+  const bool tryOther = both && (first.status.code == ErrorCode::LayoutFailed ||
+                                 (first.status.ok() && options.order == Order::Shorter));
+  if (!tryOther) {
+    if (first.status.code == ErrorCode::LayoutFailed)
+      first.status.message = std::string("the target layout cannot be completed") +
+                             (p1First ? "" : " in the source's order") + ": " + first.status.message + advice;
+    return first;
+  }
+  TargetLayoutResult second = run(true);
+  if (second.status.code == ErrorCode::Cancelled) return second;
+  second.voronoiSeconds += first.voronoiSeconds;
+  second.layoutSeconds += first.layoutSeconds;
+  if (!first.status) {
+    second.procedure1Failure = first.status.message;
+    if (second.status.code == ErrorCode::LayoutFailed)
+      second.status.message = "the target layout cannot be completed, neither in Procedure 1's order (" +
+                              first.status.message + ") nor in the source's (" + second.status.message + ")" + advice;
+    return second;
+  }
+  // Both complete (Shorter): the one whose paths keep their source paths' lengths best.
+  const double d1 = lengthDetour(src, first.layout);
+  if (!second.status || d1 <= lengthDetour(src, second.layout)) {
+    first.voronoiSeconds = second.voronoiSeconds;
+    first.layoutSeconds = second.layoutSeconds;
+    return first;
+  }
+  second.procedure1Detour = d1;
+  return second;
 }
 
 }  // namespace cbd

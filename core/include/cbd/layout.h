@@ -75,6 +75,12 @@ struct LayoutCheck {
 /// are consecutive in the rotation).
 LayoutCheck validateLayout(const Layout& layout, int expectedEuler);
 
+/// How much the paths of two isomorphic layouts disagree in length: the mean over edges of
+/// max(r/m, m/r), r the target/source length ratio of an edge and m the median ratio. 1 when
+/// every path is scaled alike; a twisted target layout, whose paths detour around anchors,
+/// scores far higher.
+double lengthDetour(const Layout& source, const Layout& target);
+
 }  // namespace cbd
 
 namespace cbd {

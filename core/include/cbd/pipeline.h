@@ -131,12 +131,6 @@ struct LayoutPair {
   std::vector<std::string> warnings;
 };
 
-/// How much the paths of two isomorphic layouts disagree in length: the mean over edges of
-/// max(r/m, m/r), r the target/source length ratio of an edge and m the median ratio. 1 when
-/// every path is scaled alike; a twisted target layout, whose paths detour around anchors,
-/// scores far higher.
-double lengthDetour(const Layout& source, const Layout& target);
-
 /// Build both layouts with the chosen method and check them (validateLayout on both surfaces,
 /// checkIsomorphic). `euler` is the surfaces' Euler characteristic. Cancelled when `progress`
 /// says stop.

@@ -50,6 +50,25 @@ struct TargetLayoutOptions {
   /// closed (so the next path passes the region's handles on another side), at most this many
   /// times per edge. 0: fail at once. Layouts that complete without it are not changed by it.
   int closedCorridorRounds = 6;
+  /// The order the paths are traced in, and with which queries.
+  enum class Order {
+    Procedure1,  ///< the paper's, as described above
+    /// The source's construction order with the source's own queries: a cut path inside the
+    /// two anchors' target clusters through one target cut of the pair at a time, a
+    /// triangulation path first through the target clusters its source path passes, then in
+    /// its region. Each path is then traced into a partial layout whose regions match those its
+    /// source path was traced in, so a layout traced onto its own surface is reproduced (where
+    /// Procedure 1's order, built for diagrams that differ, may pass a handle on the other
+    /// side and get stuck). Where the two Voronoi diagrams differ, a cut path may have no
+    /// counterpart cut and fall back to its region.
+    Source,
+    Procedure1ThenSource,  ///< Procedure 1, and the source's order when Procedure 1 gets stuck
+    /// Both, and the layout whose paths keep the lengths of their source paths best
+    /// (`lengthDetour`; Procedure 1's on a tie). For surfaces with handles, where Procedure 1's
+    /// order may complete a layout whose paths wind round a handle.
+    Shorter,
+  };
+  Order order = Order::Procedure1ThenSource;
 };
 
 /// Result of `buildTargetLayout`.
@@ -64,13 +83,17 @@ struct TargetLayoutResult {
   int waitedForPassedAnchors = 0; ///< edges postponed at least once to wait for an anchor they pass
   int rejectedPaths = 0;          ///< traced paths undone because they blocked (region mismatch)
   int pastClosedCorridors = 0;    ///< paths found only with refused paths' corridors closed
+  bool inSourceOrder = false;     ///< traced in the source's order (asked for, or kept over Procedure 1's)
+  std::string procedure1Failure;  ///< when Procedure 1's order was tried first and got stuck: where and why
+  double procedure1Detour = 0.0;  ///< when Procedure 1's layout completed but the source order's was kept: its detour
   double voronoiSeconds = 0.0;
   double layoutSeconds = 0.0;
 };
 
 /// Trace the source layout on the target surface. `targetAnchors[i]` corresponds to source
-/// anchor i. Errors: InvalidArgument (anchor count or indices), LayoutFailed, Cancelled
-/// (`progress` said stop; reported per embedded edge).
+/// anchor i. Errors: InvalidArgument (anchor count or indices), LayoutFailed (naming the edge
+/// each order tried got stuck at), Cancelled (`progress` said stop; reported per embedded edge;
+/// the progress restarts when a second order is tried).
 TargetLayoutResult buildTargetLayout(const Layout& source, const IndexedMesh& target,
                                      const std::vector<int>& targetAnchors, const TargetLayoutOptions& options = {},
                                      const Progress& progress = {});
