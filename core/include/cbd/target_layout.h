@@ -22,6 +22,10 @@
 /// When no pending edge can be traced (on high genus the shortest path may pass a handle on
 /// another side than the source's, with the same anchors on each side), a refused edge is traced
 /// again with the faces its refused paths ran through closed (`closedCorridorRounds`).
+///
+/// The same edges can instead be traced in the source's construction order with the source's
+/// own queries (`Order::Source`), which reproduces a layout traced onto its own surface; by
+/// default it is the fallback when Procedure 1's order gets stuck (`Order`).
 
 #include <string>
 #include <vector>
