@@ -359,9 +359,7 @@ TargetLayoutResult traceTarget(const Layout& src, const IndexedMesh& target, con
         return q;
       };
       // The target cuts of the pair, the one of the source cut's rank first, each crossed
-      // alone. When every one is refused, the source path crosses where the two target
-      // clusters do not meet (the diagrams differ there): the paths near it cross none of them.
-      std::vector<int> refusedCuts;
+      // alone (the others blocked), as the source crossed its cut.
       if (se.kind == EdgeKind::VoronoiCut) {
         std::vector<int> cand = targetCutsOf[std::minmax(se.a, se.b)];
         std::stable_sort(cand.begin(), cand.end(), [&](int x, int y) {
@@ -375,7 +373,6 @@ TargetLayoutResult traceTarget(const Layout& src, const IndexedMesh& target, con
           const TracedPath tp = tracer.trace(q);
           if (tp.found)
             if (const int k = keepIfMatching(tp); k != 0) return k;
-          refusedCuts.push_back(c);
         }
       }
       for (const std::vector<int>* near : {&passedAnchors[e], &nearAnchors[e]}) {
@@ -554,9 +551,12 @@ TargetLayoutResult buildTargetLayout(const Layout& src, const IndexedMesh& targe
                                      const TargetLayoutOptions& options, const Progress& progress) {
   using Order = TargetLayoutOptions::Order;
   const std::string advice = "; check that these anchors correspond, or add anchors nearby";
+  // Shorter traces both orders: each reports half the progress. A fallback restarts it.
+  const bool halves = options.order == Order::Shorter;
   auto run = [&](bool sourceOrder) {
     const auto t0 = std::chrono::steady_clock::now();
-    TargetLayoutResult x = traceTarget(src, target, anchors, options, sourceOrder, progress);
+    const Progress part = !halves ? progress : sourceOrder ? progress.part(0.5, 1.0) : progress.part(0.0, 0.5);
+    TargetLayoutResult x = traceTarget(src, target, anchors, options, sourceOrder, part);
     x.layoutSeconds = seconds(t0) - x.voronoiSeconds;
     return x;
   };

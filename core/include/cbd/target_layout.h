@@ -97,7 +97,7 @@ struct TargetLayoutResult {
 /// Trace the source layout on the target surface. `targetAnchors[i]` corresponds to source
 /// anchor i. Errors: InvalidArgument (anchor count or indices), LayoutFailed (naming the edge
 /// each order tried got stuck at), Cancelled (`progress` said stop; reported per embedded edge;
-/// the progress restarts when a second order is tried).
+/// with `Shorter` each order takes half, and the fallback of `Procedure1ThenSource` restarts it).
 TargetLayoutResult buildTargetLayout(const Layout& source, const IndexedMesh& target,
                                      const std::vector<int>& targetAnchors, const TargetLayoutOptions& options = {},
                                      const Progress& progress = {});
