@@ -326,37 +326,51 @@ TargetLayoutResult traceTarget(const Layout& src, const IndexedMesh& target, con
     // through one target cut of its pair at a time (the one of the source's rank first); then
     // any path through the target clusters its source path passes, or near it (two rings of
     // faces, for a source cut too short to have a target counterpart); then the region.
+    // Commit a traced path and keep it when the regions beside it match the source's: 1. Else
+    // undo it: 0, with `got` the regions it made and `corridor` (when asked) the faces it ran
+    // through. -1: internal error (r.status set).
+    auto keepIfMatching = [&](const TracedPath& tp, std::vector<RegionSignature>& got, std::vector<int>* corridor) -> int {
+      std::vector<int> chain;
+      const PathTracer::Checkpoint before = tracer.checkpoint();
+      if (Status s = tracer.commit(tp, e, chain); !s) {
+        r.status = s;
+        return -1;
+      }
+      refreshTargetAnchorOf();
+      got = tgtRegions.add(chain, region);
+      if (got == want) {
+        L.edges[e].vertices = std::move(chain);
+        L.edges[e].length = tp.length;
+        return 1;
+      }
+      if (corridor)
+        for (size_t i = 0; i + 1 < chain.size(); ++i) {
+          const int h = L.mesh.findHalfedge(chain[i], chain[i + 1]);
+          if (h < 0) continue;
+          corridor->push_back(L.mesh.face(h));
+          corridor->push_back(L.mesh.face(RefinedMesh::twin(h)));
+        }
+      tracer.rollback(chain, e, before);
+      tgtRegions.undo();
+      ++r.rejectedPaths;
+      return 0;
+    };
+    auto query = [&] {  // from a's sector to b's
+      PathQuery q;
+      q.source = anchors[se.a];
+      q.sourceFaces = sa.faces;
+      q.goals.push_back({anchors[se.b], sb.faces, 0});
+      return q;
+    };
     if (sourceOrder) {
       frontier.clear();
-      // Commit a traced path; keep it when the regions beside it match the source's, else
-      // undo it. 1 kept, 0 refused, -1 internal error.
-      auto keepIfMatching = [&](const TracedPath& tp) -> int {
-        std::vector<int> chain;
-        const PathTracer::Checkpoint before = tracer.checkpoint();
-        if (Status s = tracer.commit(tp, e, chain); !s) {
-          r.status = s;
-          return -1;
-        }
-        refreshTargetAnchorOf();
-        const std::vector<RegionSignature> got = tgtRegions.add(chain, region);
-        if (got == want) {
-          L.edges[e].vertices = std::move(chain);
-          L.edges[e].length = tp.length;
-          ++r.embeddedInClusters;
-          return 1;
-        }
-        tracer.rollback(chain, e, before);
-        tgtRegions.undo();
-        ++r.rejectedPaths;
-        reason[e] = "its path in the source's order " + refusal(want, got) + " (blocking)";
-        return 0;
-      };
-      auto query = [&] {
-        PathQuery q;
-        q.source = anchors[se.a];
-        q.sourceFaces = sa.faces;
-        q.goals.push_back({anchors[se.b], sb.faces, 0});
-        return q;
+      // Try a path found by the source's query. Kept (1), refused (0), internal error (-1).
+      auto tryPath = [&](const TracedPath& tp) {
+        std::vector<RegionSignature> got;
+        const int k = keepIfMatching(tp, got, nullptr);
+        if (k > 0) ++r.embeddedInClusters;
+        if (k == 0) reason[e] = "its path in the source's order " + refusal(want, got) + " (blocking)";
+        return k;
       };
       // The target cuts of the pair, the one of the source cut's rank first, each crossed
       // alone (the others blocked), as the source crossed its cut.
@@ -372,7 +386,7 @@ TargetLayoutResult traceTarget(const Layout& src, const IndexedMesh& target, con
             if (o != c) q.blockedEdgeLabels.push_back(o);
           const TracedPath tp = tracer.trace(q);
           if (tp.found)
-            if (const int k = keepIfMatching(tp); k != 0) return k;
+            if (const int k = tryPath(tp); k != 0) return k;
         }
       }
       for (const std::vector<int>* near : {&passedAnchors[e], &nearAnchors[e]}) {
@@ -386,7 +400,7 @@ TargetLayoutResult traceTarget(const Layout& src, const IndexedMesh& target, con
         q.filter.group = &tracer.faceLabel(), q.filter.groupAllowed = &inRing;
         const TracedPath tp = tracer.trace(q);
         if (!tp.found) continue;
-        if (const int k = keepIfMatching(tp); k != 0) return k;
+        if (const int k = tryPath(tp); k != 0) return k;
       }
     }
     std::vector<char> walls;
@@ -399,10 +413,7 @@ TargetLayoutResult traceTarget(const Layout& src, const IndexedMesh& target, con
         for (int d : clusterNeighbours[c])
           if (ring[d] < 0) ring[d] = attempt + 1, next.push_back(d);
       frontier = std::move(next);
-      PathQuery q;
-      q.source = anchors[se.a];
-      q.sourceFaces = sa.faces;
-      q.goals.push_back({anchors[se.b], sb.faces, 0});
+      PathQuery q = query();
       q.filter.label = &tgtRegions.labels();
       q.filter.a = q.filter.b = region;
       if (!wholeRegion) q.filter.group = &tracer.faceLabel(), q.filter.groupAllowed = &inRing;
@@ -414,32 +425,16 @@ TargetLayoutResult traceTarget(const Layout& src, const IndexedMesh& target, con
         if (wholeRegion) break;
         continue;
       }
-      std::vector<int> chain;
-      const PathTracer::Checkpoint before = tracer.checkpoint();
-      if (Status s = tracer.commit(tp, e, chain); !s) {
-        r.status = s;
-        return -1;
-      }
-      refreshTargetAnchorOf();
-      const std::vector<RegionSignature> got = tgtRegions.add(chain, region);
-      if (got == want) {
-        L.edges[e].vertices = std::move(chain);
-        L.edges[e].length = tp.length;
+      std::vector<RegionSignature> got;
+      std::vector<int> corridor;  // the faces a refused path ran through, when walls may follow
+      const bool wallsNext = walled && wholeRegion && wallRounds < options.closedCorridorRounds;
+      const int kept = keepIfMatching(tp, got, wallsNext ? &corridor : nullptr);
+      if (kept < 0) return -1;
+      if (kept > 0) {
         (attempt == 0 && !sourceOrder ? r.embeddedInClusters : r.embeddedInRegion)++;
         r.pastClosedCorridors += wallRounds > 0;
         return 1;
       }
-      std::vector<int> corridor;  // the faces the refused path runs through
-      if (walled && wholeRegion && wallRounds < options.closedCorridorRounds)
-        for (size_t i = 0; i + 1 < chain.size(); ++i) {
-          const int h = L.mesh.findHalfedge(chain[i], chain[i + 1]);
-          if (h < 0) continue;
-          corridor.push_back(L.mesh.face(h));
-          corridor.push_back(L.mesh.face(RefinedMesh::twin(h)));
-        }
-      tracer.rollback(chain, e, before);
-      tgtRegions.undo();
-      ++r.rejectedPaths;
       reason[e] = (walled ? "every path tried, also with the corridors of the refused ones closed, was refused "
                              "(blocking): the last one "
                            : "its shortest path ") +

@@ -271,6 +271,18 @@ Vec3 warpedCopyPoint(const Vec3& x) {
   return 1.5 * bump * (R * x);
 }
 
+IndexedMesh warpedCopy(const IndexedMesh& mesh) {
+  IndexedMesh t = mesh;
+  for (Vec3& x : t.positions) x = warpedCopyPoint(x);
+  return t;
+}
+
+IndexedMesh readMeshOrEmpty(const std::string& path) {
+  Mesh loaded;
+  if (!std::ifstream(path) || !loadMesh(path, loaded).status.ok()) return {};
+  return toIndexed(loaded);
+}
+
 int eulerCharacteristic(const IndexedMesh& mesh) {
   std::set<std::pair<int, int>> edges;
   std::set<int> verts;

@@ -70,6 +70,12 @@ Vec3 pointOn(const IndexedMesh& mesh, const FacePoint& p);
 /// A smooth warp on the scale of the CGAL meshes (about 1 across): turned by 0.7 about z, scaled
 /// by 1.5, bumped by 3 %; a mesh and its warped copy have the known correspondence v -> v.
 Vec3 warpedCopyPoint(const Vec3& x);
+/// The mesh with every position moved by `warpedCopyPoint`.
+IndexedMesh warpedCopy(const IndexedMesh& mesh);
+
+/// A mesh read from a file, or an empty mesh when it is absent or unreadable (the caller skips:
+/// scripts/setup.sh unpacks the CGAL meshes).
+IndexedMesh readMeshOrEmpty(const std::string& path);
 
 /// Euler characteristic V - E + F over referenced vertices.
 int eulerCharacteristic(const IndexedMesh& mesh);
