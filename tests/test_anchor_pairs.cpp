@@ -6,7 +6,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <filesystem>
 
 #include "cbd/anchor_pairs.h"
 #include "cbd/anchor_sampling.h"
@@ -36,12 +35,7 @@ struct SphereCase {
 };
 
 /// femur.off from Debian's libcgal-demo, or an empty mesh when setup has not unpacked it.
-IndexedMesh femur() {
-  const std::string path = std::string(CBD_CGAL_MESHES) + "/femur.off";
-  Mesh m;
-  if (!std::filesystem::exists(path) || !loadMesh(path, m).status.ok()) return {};
-  return toIndexed(m);
-}
+IndexedMesh femur() { return fx::readMeshOrEmpty(std::string(CBD_CGAL_MESHES) + "/femur.off"); }
 
 }  // namespace
 

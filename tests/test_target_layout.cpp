@@ -209,6 +209,14 @@ TEST(TargetLayoutOnRealMeshes, PathsPassAnchorsOnTheSideTheSourceDoes) {
   EXPECT_EQ(checked, 1);
 }
 
+// Each target path's length over its source path's, sorted.
+static std::vector<double> sortedLengthRatios(const Layout& source, const Layout& target, double scale) {
+  std::vector<double> ratio;
+  for (size_t e = 0; e < source.edges.size(); ++e) ratio.push_back(target.edges[e].length / (scale * source.edges[e].length));
+  std::sort(ratio.begin(), ratio.end());
+  return ratio;
+}
+
 TEST(TargetLayoutOnRealMeshes, RefusedPathsOnHighGenusAreRetriedPastTheirCorridors) {
   // turbine.off (genus 11) onto a smoothly warped copy of itself, 12 anchors by farthest-point
   // sampling from vertices 2 and 3: the shortest target path between two of them in their
@@ -242,21 +250,10 @@ TEST(TargetLayoutOnRealMeshes, RefusedPathsOnHighGenusAreRetriedPastTheirCorrido
     EXPECT_TRUE(checkIsomorphic(src.layout, tl.layout).ok()) << seed;
     // On a copy scaled by 1.5 the paths keep their lengths, times 1.5, up to the bumps and the
     // detours of paths that had to wait: the median ratio near 1, none winding round a blade.
-    std::vector<double> ratio;
-    for (size_t e = 0; e < src.layout.edges.size(); ++e)
-      ratio.push_back(tl.layout.edges[e].length / (1.5 * src.layout.edges[e].length));
-    std::sort(ratio.begin(), ratio.end());
+    const std::vector<double> ratio = sortedLengthRatios(src.layout, tl.layout, 1.5);
     EXPECT_NEAR(ratio[ratio.size() / 2], 1.0, 0.15) << seed;
     EXPECT_LT(ratio.back(), 3.0) << seed;
   }
-}
-
-// Each target path's length over its source path's, sorted.
-std::vector<double> sortedLengthRatios(const Layout& source, const Layout& target, double scale) {
-  std::vector<double> ratio;
-  for (size_t e = 0; e < source.edges.size(); ++e) ratio.push_back(target.edges[e].length / (scale * source.edges[e].length));
-  std::sort(ratio.begin(), ratio.end());
-  return ratio;
 }
 
 TEST(TargetLayoutOnRealMeshes, SourceOrderReproducesHighGenusLayoutsOnTheirOwnSurface) {

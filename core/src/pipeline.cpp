@@ -32,7 +32,6 @@ Status validate(const CrossParameterizationOptions& o) {
   return Status::success();
 }
 
-
 namespace {
 
 /// The Voronoi method with `from` as the surface whose diagram gives the layout. `ontoIsFrom`:

@@ -133,17 +133,16 @@ TargetLayoutResult traceTarget(const Layout& src, const IndexedMesh& target, con
     L.edges[e].b = src.edges[e].b;
     L.edges[e].kind = src.edges[e].kind;
   }
-  // Source edges per anchor pair, and target cuts per pair.
-  std::map<std::pair<int, int>, int> sourceLinks, targetCuts;
+  // Source edges per anchor pair, and the target cuts of each pair.
+  std::map<std::pair<int, int>, int> sourceLinks;
   for (const LayoutEdge& e : src.edges) ++sourceLinks[std::minmax(e.a, e.b)];
-  for (const Cut& c : r.cuts.cuts) ++targetCuts[{c.i, c.j}];
-  // For the source's order: the target cuts of each pair.
   std::map<std::pair<int, int>, std::vector<int>> targetCutsOf;
   for (int c = 0; c < static_cast<int>(r.cuts.cuts.size()); ++c) targetCutsOf[{r.cuts.cuts[c].i, r.cuts.cuts[c].j}].push_back(c);
   auto group = [&](int e) {
     const auto key = std::minmax(src.edges[e].a, src.edges[e].b);
     if (sourceLinks[key] > 1) return 2;  // (c) multiple linkage
-    const int cuts = targetCuts.count(key) ? targetCuts[key] : 0;
+    const auto it = targetCutsOf.find(key);
+    const size_t cuts = it == targetCutsOf.end() ? 0 : it->second.size();
     if (cuts == 1) return 0;             // (a)
     if (cuts == 0) return 1;             // (b)
     return 2;                            // one source edge, several target cuts: like (c)
@@ -322,10 +321,6 @@ TargetLayoutResult traceTarget(const Layout& src, const IndexedMesh& target, con
       reason[e] = "its two sectors lie in different regions of the partial target layout";
       return notNow();
     }
-    // Source order: the source's query first. A cut path inside the two target clusters,
-    // through one target cut of its pair at a time (the one of the source's rank first); then
-    // any path through the target clusters its source path passes, or near it (two rings of
-    // faces, for a source cut too short to have a target counterpart); then the region.
     // Commit a traced path and keep it when the regions beside it match the source's: 1. Else
     // undo it: 0, with `got` the regions it made and `corridor` (when asked) the faces it ran
     // through. -1: internal error (r.status set).
@@ -362,6 +357,10 @@ TargetLayoutResult traceTarget(const Layout& src, const IndexedMesh& target, con
       q.goals.push_back({anchors[se.b], sb.faces, 0});
       return q;
     };
+    // Source order: the source's query first. A cut path inside the two target clusters,
+    // through one target cut of its pair at a time (the one of the source's rank first); then
+    // any path through the target clusters its source path passes, or near it (two rings of
+    // faces, for a source cut too short to have a target counterpart); then the region.
     if (sourceOrder) {
       frontier.clear();
       // Try a path found by the source's query. Kept (1), refused (0), internal error (-1).

@@ -58,9 +58,9 @@ struct TargetLayoutOptions {
   enum class Order {
     Procedure1,  ///< the paper's, as described above
     /// The source's construction order with the source's own queries: a cut path inside the
-    /// two anchors' target clusters through one target cut of the pair at a time, a
-    /// triangulation path first through the target clusters its source path passes, then in
-    /// its region. Each path is then traced into a partial layout whose regions match those its
+    /// two anchors' target clusters through one target cut of the pair at a time; then any
+    /// path through the target clusters its source path passes, then through those within two
+    /// rings of faces of it, then in its region. Each path is then traced into a partial layout whose regions match those its
     /// source path was traced in, so a layout traced onto its own surface is reproduced (where
     /// Procedure 1's order, built for diagrams that differ, may pass a handle on the other
     /// side and get stuck). Where the two Voronoi diagrams differ, a cut path may have no
