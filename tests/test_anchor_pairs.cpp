@@ -129,10 +129,9 @@ TEST(AnchorPairsOnRealMeshes, FemurMapsOntoAWarpedCopy) {
     EXPECT_TRUE(checkIsomorphic(r.layouts.source, r.layouts.target).ok());
     EXPECT_EQ(r.metrics.flipped, 0) << n;
     EXPECT_EQ(r.metrics.degenerate, 0) << n;
-    // Every anchor, given or added, maps onto its partner.
+    // Every given anchor maps onto its partner (added pairs are only placed: the untangling may
+    // move them).
     for (int v : a) EXPECT_NEAR((r.map.sourceImage[v] - t.positions[v]).norm(), 0.0, 1e-9);
-    for (const auto& [u, w] : r.layouts.addedAnchors)
-      EXPECT_NEAR((r.map.sourceImage[u] - t.positions[w]).norm(), 0.0, 1e-9);
     // The known correspondence (vertex v onto warped vertex v) recovered on average within 1 %
     // of the diagonal.
     double sum = 0;

@@ -185,7 +185,8 @@ LayoutPair buildLayouts(const IndexedMesh& source, const std::vector<int>& sa, c
                          (p.addedAnchors.size() == 1 ? " was" : "s were") +
                          " added where no path could split a region (a handle smaller than the anchor spacing): " +
                          list + (p.sameSurface ? "" : " (source / target)") +
-                         "; they stay fixed in the map: give anchors there to choose their places");
+                         "; the untangling may move their images where that lowers distortion (`--map-stage optimize` "
+                         "keeps them): give anchors there to choose their places");
   }
   if (options.detourWarning > 0 && p.detour > options.detourWarning && !p.sameSurface) {
     char d[32];
@@ -274,7 +275,6 @@ CrossParameterizationResult crossParameterize(const IndexedMesh& source, const s
     std::vector<char> fixedS(source.vertexCount(), 0), fixedT(target.vertexCount(), 0);
     for (int v : sa) fixedS[v] = 1;
     for (int v : ta) fixedT[v] = 1;
-    for (const auto& [s, t] : r.layouts.addedAnchors) fixedS[s] = fixedT[t] = 1;
     // The two directions are independent: one on a second thread.
     std::thread inverse([&] {
       r.untangleTarget = untangleCrossMap(target, source, fixedT, r.map.targetToSource, r.map.targetImage,

@@ -40,7 +40,7 @@
 /// composed map that happens to have no flip is polished like one that has. A map without angle
 /// distortion but for rounding (the identity) is returned unchanged.
 /// Internally a triangle counts as flipped by the stricter `imageFlipped`; what is reported is
-/// the metrics' count (`TargetNormals::flipped`). Anchors never move.
+/// the metrics' count (`TargetNormals::flipped`). Vertices marked `fixed` (the given anchors) never move.
 
 #include <cstdint>
 #include <vector>
