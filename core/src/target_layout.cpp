@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdio>
+#include <limits>
 #include <map>
 #include <numeric>
 #include <set>
@@ -31,6 +33,85 @@ std::string refusal(const std::vector<RegionSignature>& want, const std::vector<
   if (anchors) return "would enclose other anchors than on the source";
   if (handles) return "would leave a handle of its region on the other side of it than on the source";
   return "would give its regions other boundaries than on the source";
+}
+
+/// The input vertex at a handle of region `region` (its faces labelled so, bounded by the edges
+/// with edgePath >= 0): on the shortest loop of a homology basis of the region, by tree-cotree
+/// (Eppstein 2003: a spanning tree of the region's faces across free edges, a spanning forest
+/// of its vertices over the edges the face tree does not cross; each free edge in neither
+/// closes a loop in the face tree), the corner of the loop's faces nearest the loop's mean
+/// point that is an input vertex off every path. -1 when the region has no handle (a disk, or
+/// loops only parallel to its boundary) or the loop has no such corner.
+int handleVertex(const RefinedMesh& m, const std::vector<int>& label, int region, const std::vector<int>& edgePath,
+                 const std::vector<int>& anchorOf) {
+  const int nf = m.faceCount();
+  std::vector<int> parentEdge(nf, -2), depth(nf, 0);  // -2: not reached; -1: the root
+  std::vector<int> order;
+  for (int f = 0; f < nf && order.empty(); ++f)
+    if (label[f] == region) parentEdge[f] = -1, order.push_back(f);
+  auto other = [&](int f, int e) { return m.face(2 * e) == f ? m.face(2 * e + 1) : m.face(2 * e); };
+  auto freeInside = [&](int e) {
+    return edgePath[e] < 0 && label[m.face(2 * e)] == region && label[m.face(2 * e + 1)] == region;
+  };
+  for (size_t i = 0; i < order.size(); ++i) {
+    int h = m.faceHalfedge(order[i]);
+    for (int k = 0; k < 3; ++k, h = m.next(h)) {
+      const int e = RefinedMesh::edgeOf(h), g = other(order[i], e);
+      if (!freeInside(e) || parentEdge[g] != -2) continue;
+      parentEdge[g] = e, depth[g] = depth[order[i]] + 1, order.push_back(g);
+    }
+  }
+  std::vector<int> root(m.vertexCount());
+  std::iota(root.begin(), root.end(), 0);
+  auto find = [&](int v) {
+    while (root[v] != v) v = root[v] = root[root[v]];
+    return v;
+  };
+  std::vector<char> seen(m.edgeCount(), 0);
+  std::vector<int> best;  // the faces of the shortest loop so far
+  for (const int f : order) {
+    int h = m.faceHalfedge(f);
+    for (int k = 0; k < 3; ++k, h = m.next(h)) {
+      const int e = RefinedMesh::edgeOf(h);
+      if (seen[e]) continue;
+      seen[e] = 1;
+      const int g = other(f, e);
+      if (freeInside(e) && (parentEdge[f] == e || parentEdge[g] == e)) continue;  // in the face tree
+      const int a = find(m.from(h)), b = find(m.to(h));
+      if (a != b) {
+        root[a] = b;
+        continue;
+      }
+      if (!freeInside(e)) continue;
+      std::vector<int> loop{f, g};  // up the face tree from f and g to their common ancestor
+      int x = f, y = g;
+      while (x != y) {
+        int& deeper = depth[x] >= depth[y] ? x : y;
+        deeper = other(deeper, parentEdge[deeper]);
+        loop.push_back(deeper);
+      }
+      if (best.empty() || loop.size() < best.size()) best = std::move(loop);
+    }
+  }
+  auto onPath = [&](int v) {
+    const int start = m.outgoing(v);
+    int h = start;
+    do {
+      if (edgePath[RefinedMesh::edgeOf(h)] >= 0) return true;
+      h = m.rotateCCW(h);
+    } while (h != start);
+    return false;
+  };
+  Vec3 mean = Vec3::Zero();
+  for (const int f : best)
+    for (const int v : m.faceVertices(f)) mean += m.position(v) / (3.0 * best.size());
+  int vertex = -1;
+  double nearest = std::numeric_limits<double>::infinity();
+  for (const int f : best)
+    for (const int v : m.faceVertices(f))
+      if (m.inputVertex(v) >= 0 && anchorOf[v] < 0 && !onPath(v) && (m.position(v) - mean).norm() < nearest)
+        vertex = v, nearest = (m.position(v) - mean).norm();
+  return vertex;
 }
 
 }  // namespace
@@ -241,6 +322,9 @@ TargetLayoutResult traceTarget(const Layout& src, const IndexedMesh& target, con
   RegionTracker tgtRegions(L.mesh, tracer.edgePath(), tgtAnchorOf, src.edges);
   std::vector<char> inRing(na, 0);
   std::vector<std::string> reason(ne);  // why each edge was last not traced
+  // Per edge, whether its last refused path cut in two a region its source path runs round a
+  // handle of.
+  std::vector<char> refusedAtHandle(ne, 0);
   // The anchors whose clusters each source path runs through besides its own two: the faces on
   // both sides of the path, by their source cluster.
   std::vector<std::vector<int>> passedAnchors(ne);
@@ -345,6 +429,7 @@ TargetLayoutResult traceTarget(const Layout& src, const IndexedMesh& target, con
           corridor->push_back(L.mesh.face(h));
           corridor->push_back(L.mesh.face(RefinedMesh::twin(h)));
         }
+      refusedAtHandle[e] = want.size() == 1 && got.size() == 2;
       tracer.rollback(chain, e, before);
       tgtRegions.undo();
       ++r.rejectedPaths;
@@ -513,6 +598,20 @@ TargetLayoutResult traceTarget(const Layout& src, const IndexedMesh& target, con
                                                             anchorLabel(options.anchorNames, se.a) + " and " +
                                                             anchorLabel(options.anchorNames, se.b) + " (" +
                                                             std::to_string(pending.size()) + " edges left): " + reason[stuck]);
+      // Where the source's path runs round a handle the target's paths cannot pass, name a
+      // vertex at it: an anchor pair there gives the paths a corner at the handle.
+      if (refusedAtHandle[stuck]) {
+        const int sr = srcRegions.regionOf(src.mesh.face(src.mesh.findHalfedge(se.vertices[0], se.vertices[1])));
+        const int s = handleVertex(src.mesh, srcRegions.labels(), sr, srcPartial, srcAnchorOf);
+        if (s >= 0) {
+          const Vec3& x = src.mesh.position(s);
+          char where[96];
+          std::snprintf(where, sizeof where, "vertex %d (%.6g %.6g %.6g)", s, x.x(), x.y(), x.z());
+          r.handleSourceVertex = s;
+          r.status.message += "; the source's path runs round a handle there, smaller than the anchor spacing, near source " +
+                              std::string(where) + ": an anchor pair there (on both surfaces) gives the paths a corner at it";
+        }
+      }
       return r;
     }
   }

@@ -90,6 +90,11 @@ struct TargetLayoutResult {
   bool inSourceOrder = false;     ///< traced in the source's order (asked for, or kept over Procedure 1's)
   std::string procedure1Failure;  ///< when Procedure 1's order was tried first and got stuck: where and why
   double procedure1Detour = 0.0;  ///< when Procedure 1's layout completed but the source order's was kept: its detour
+  /// LayoutFailed where the source's path runs round a handle of its region and every target
+  /// path tried cuts the corresponding region in two: a source input vertex at that handle (on
+  /// the shortest loop of a homology basis of the region, by tree-cotree), which the message
+  /// names: an anchor pair there lets the layouts pass the handle. -1 otherwise.
+  int handleSourceVertex = -1;
   double voronoiSeconds = 0.0;
   double layoutSeconds = 0.0;
 };
