@@ -52,8 +52,6 @@ std::vector<int> cornerWedge(const RefinedMesh& m, const std::vector<int>& edgeP
   return faces;
 }
 
-namespace {
-
 bool onPath(const RefinedMesh& m, const std::vector<int>& edgePath, int v) {
   const int start = m.outgoing(v);
   int h = start;
@@ -63,6 +61,8 @@ bool onPath(const RefinedMesh& m, const std::vector<int>& edgePath, int v) {
   } while (h != start);
   return false;
 }
+
+namespace {
 
 /// Everything about one region, given its faces: Euler characteristic of the region cut open
 /// along its paths (V - E + F, one wedge corner per boundary halfedge), boundary loops with

@@ -90,18 +90,11 @@ int handleVertex(const RefinedMesh& m, const std::vector<int>& label, int region
         deeper = other(deeper, parentEdge[deeper]);
         loop.push_back(deeper);
       }
+      std::sort(loop.begin(), loop.end());  // its faces, each once
+      loop.erase(std::unique(loop.begin(), loop.end()), loop.end());
       if (best.empty() || loop.size() < best.size()) best = std::move(loop);
     }
   }
-  auto onPath = [&](int v) {
-    const int start = m.outgoing(v);
-    int h = start;
-    do {
-      if (edgePath[RefinedMesh::edgeOf(h)] >= 0) return true;
-      h = m.rotateCCW(h);
-    } while (h != start);
-    return false;
-  };
   Vec3 mean = Vec3::Zero();
   for (const int f : best)
     for (const int v : m.faceVertices(f)) mean += m.position(v) / (3.0 * best.size());
@@ -109,7 +102,7 @@ int handleVertex(const RefinedMesh& m, const std::vector<int>& label, int region
   double nearest = std::numeric_limits<double>::infinity();
   for (const int f : best)
     for (const int v : m.faceVertices(f))
-      if (m.inputVertex(v) >= 0 && anchorOf[v] < 0 && !onPath(v) && (m.position(v) - mean).norm() < nearest)
+      if (m.inputVertex(v) >= 0 && anchorOf[v] < 0 && !onPath(m, edgePath, v) && (m.position(v) - mean).norm() < nearest)
         vertex = v, nearest = (m.position(v) - mean).norm();
   return vertex;
 }

@@ -219,6 +219,9 @@ class RegionTracker {
 /// The halfedge by which a path (vertex chain) leaves its end vertex v.
 int leavingHalfedge(const RefinedMesh& mesh, const std::vector<int>& chain, int v);
 
+/// Whether vertex v lies on a path: an edge round it has edgePath >= 0.
+bool onPath(const RefinedMesh& mesh, const std::vector<int>& edgePath, int v);
+
 /// Length of a vertex chain of `mesh` (sum of its segments).
 double chainLength(const RefinedMesh& mesh, const std::vector<int>& chain);
 
