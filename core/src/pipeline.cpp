@@ -185,8 +185,8 @@ LayoutPair buildLayouts(const IndexedMesh& source, const std::vector<int>& sa, c
                          (p.addedAnchors.size() == 1 ? " was" : "s were") +
                          " added where no path could split a region (a handle smaller than the anchor spacing): " +
                          list + (p.sameSurface ? "" : " (source / target)") +
-                         "; the untangling may move their images where that lowers distortion (`--map-stage optimize` "
-                         "keeps them): give anchors there to choose their places");
+                         "; the untangling may move their images (the experimental optimization keeps them): give "
+                         "anchors there to choose their places");
   }
   if (options.detourWarning > 0 && p.detour > options.detourWarning && !p.sameSurface) {
     char d[32];
