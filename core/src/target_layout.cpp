@@ -318,6 +318,11 @@ TargetLayoutResult traceTarget(const Layout& src, const IndexedMesh& target, con
   // Per edge, whether its last refused path cut in two a region its source path runs round a
   // handle of.
   std::vector<char> refusedAtHandle(ne, 0);
+  // The region of the partial source layout a source edge lies in (beside its first step).
+  auto sourceRegionOf = [&](int e) {
+    const auto& chain = src.edges[e].vertices;
+    return srcRegions.regionOf(src.mesh.face(src.mesh.findHalfedge(chain[0], chain[1])));
+  };
   // The anchors whose clusters each source path runs through besides its own two: the faces on
   // both sides of the path, by their source cluster.
   std::vector<std::vector<int>> passedAnchors(ne);
@@ -378,7 +383,7 @@ TargetLayoutResult traceTarget(const Layout& src, const IndexedMesh& target, con
     // The regions beside this edge in the partial source layout once it is added: what the
     // target must reproduce beside its path (the other regions already agree). Undone unless
     // the edge is embedded.
-    const int srcRegion = srcRegions.regionOf(src.mesh.face(src.mesh.findHalfedge(se.vertices[0], se.vertices[1])));
+    const int srcRegion = sourceRegionOf(e);
     setSourceEdge(e, e);
     const std::vector<RegionSignature> want = srcRegions.add(se.vertices, srcRegion);
     auto notNow = [&] {
@@ -594,8 +599,7 @@ TargetLayoutResult traceTarget(const Layout& src, const IndexedMesh& target, con
       // Where the source's path runs round a handle the target's paths cannot pass, name a
       // vertex at it: an anchor pair there gives the paths a corner at the handle.
       if (refusedAtHandle[stuck]) {
-        const int sr = srcRegions.regionOf(src.mesh.face(src.mesh.findHalfedge(se.vertices[0], se.vertices[1])));
-        const int s = handleVertex(src.mesh, srcRegions.labels(), sr, srcPartial, srcAnchorOf);
+        const int s = handleVertex(src.mesh, srcRegions.labels(), sourceRegionOf(stuck), srcPartial, srcAnchorOf);
         if (s >= 0) {
           const Vec3& x = src.mesh.position(s);
           char where[96];
