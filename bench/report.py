@@ -180,6 +180,34 @@ def md_orders():
     return f'{n_orders} polish orders per method and pair (the index order of the table above, then ' \
            f'{n_orders - 1} seeded permutations).\n\n' + '\n'.join(lines)
 
+def md_renumber():
+    """Each pair and method run on the source as given and renumbered (bench/renumber.sh): how far
+    the images of the source's vertices moved, and both runs' metrics, per map stage."""
+    stages = [('composed', 'composed (the map before its last stage)'), ('untangle', 'untangle (the default)'),
+              ('optimize', 'optimize')]
+    got = {}
+    for name, _ in stages[1:]:
+        for r in rows(os.path.join(out, f'renumber_{name}.csv')):
+            got[(r['pair'], r['method'], r['map'])] = r
+    if not got:
+        return '(not run: `bench/renumber.sh`, which `bench/run.sh` runs without `--quick`)'
+    pairs = []
+    for (p, _, _) in got:
+        if p not in pairs:
+            pairs.append(p)
+    lines = ['| pair | method | map | largest / median move | E_ang: as given / renumbered | E_L2 | flipped |',
+             '|---|---|---|---|---|---|---|']
+    for p in pairs:
+        for m in ('voronoi', 'greedy'):
+            for k, label in stages:
+                r = got.get((p, m, k))
+                if r:
+                    lines.append(f"| {p} | {m} | {label} | {float(r['max_moved']):.1e} / {float(r['median_moved']):.1e} | "
+                                 f"{float(r['e_ang']):.4f} / {float(r['e_ang_renumbered']):.4f} | "
+                                 f"{float(r['e_l2']):.4f} / {float(r['e_l2_renumbered']):.4f} | "
+                                 f"{r['flipped']} / {r['flipped_renumbered']} |")
+    return '\n'.join(lines)
+
 def md_sensitivity():
     """Greedy against Voronoi C over the rounds of path straightening: the default (ROUNDS) and the
     paths as traced (0) from table.csv, the other rounds from sensitivity.csv; per pair, each
@@ -428,6 +456,17 @@ straightening, patch maps, untangling and polish; the polish moves vertices acro
 boundaries, so a base domain decides the final map only through where the descent starts. The
 "composed" columns above (before untangling) are what the base domains and patch maps give by
 themselves.
+
+## How far the source's vertex numbering moves the map
+
+The same pairs with the source's vertices and faces renumbered (a seeded shuffle; the mesh and
+its anchors are otherwise the same), run by `bench/renumber.sh` through `cbd map`. A move is the
+distance between a source vertex's images in the two runs, as a fraction of the target's
+bounding-box diagonal. The composed map moves where rounding in the straightening's and the
+patch maps' solves tips a discrete choice (a path snapped onto a vertex or not); the map stages
+after it then end at other local minima, so their numbers move more than the composed map does.
+
+{md_renumber()}
 
 ## How far the straightening moves the final numbers
 

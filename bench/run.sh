@@ -5,13 +5,14 @@
 #      greedy and C also with two more polish vertex orders (the spread of the final numbers),
 #      and with 1, 4 and 8 rounds of path straightening besides the default 2 (sensitivity);
 #      and where on the source their maps differ (per-anchor regions); and greedy without its
-#      path flipping, Voronoi C with it;
+#      path flipping, Voronoi C with it; and every pair again with the source's vertices and
+#      faces renumbered, with each map stage (bench/renumber.sh);
 #   2. scaling: layout time against anchors (on diplodocus) and against mesh size (the cow
 #      subdivided 1-to-4), both methods, next to one full Dijkstra sweep of the edge-node graph;
 #   3. random-anchor stress on synthetic genus 0/1/2 pairs;
 #   4. plots (gnuplot) and renders (cbd_render), and bench/README.md with every number from
 #      this run.
-# Usage: bench/run.sh [--quick]   (--quick: fewer scaling points and stress sets, one polish order, no straightening sensitivity, no regions, no path flipping)
+# Usage: bench/run.sh [--quick]   (--quick: fewer scaling points and stress sets, one polish order, no straightening sensitivity, no regions, no path flipping, no renumbering)
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 . "$ROOT/scripts/args.sh"
@@ -51,6 +52,14 @@ if [ "$QUICK" = 0 ]; then
   "$B" flipping "$ROOT" "$ROOT/bench/manifest.txt" "$OUT" | tee "$OUT/flipping.log"
 else
   rm -f "$OUT/flipping.csv"
+fi
+
+if [ "$QUICK" = 0 ]; then
+  echo "== the source renumbered"
+  bash "$ROOT/bench/renumber.sh" "$OUT" | tee "$OUT/renumber_untangle.log"
+  bash "$ROOT/bench/renumber.sh" "$OUT" -- --map-stage optimize | tee "$OUT/renumber_optimize.log"
+else
+  rm -f "$OUT"/renumber_*.csv
 fi
 
 echo "== scaling"
