@@ -44,7 +44,7 @@ except Exception: print("fail", "no_report")' "$json"
   fi
 }
 
-SHREC="$(cd "$ROOT/.." && pwd)/shared/data/shrec07-fourleg"
+. "$ROOT/bench/manifest.sh"
 mkdir -p "$OUT"
 CSV="$OUT/compare.csv"
 echo "pair,method,ref,ref_total_s,new_total_s,ratio,ref_e_ang,new_e_ang,ref_e_l2,new_e_l2,ref_flipped,new_flipped" >"$CSV"
@@ -53,15 +53,8 @@ echo "|---|---|---|---|---|---|---|---|"
 first=0
 while read -r name s t sa ta; do
   case "$name" in "" | \#*) continue ;; esac
-  files=()
-  for f in "$s" "$t" "$sa" "$ta"; do
-    f="${f/\$SHREC/$SHREC}"
-    [[ "$f" = /* ]] || f="$ROOT/$f"
-    files+=("$f")
-  done
-  missing=0
-  for f in "${files[@]}"; do [ -f "$f" ] || missing=1; done
-  [ "$missing" = 0 ] || { echo "| $name | skipped: input missing | | | | | | |"; continue; }
+  manifest_pair "$s" "$t" "$sa" "$ta" || { echo "| $name | skipped: input missing | | | | | | |"; continue; }
+  files=("${FILES[@]}")
   args=(--source "${files[0]}" --target "${files[1]}" --source-anchors "${files[2]}" --target-anchors "${files[3]}")
   for method in voronoi greedy; do
     if [ "$first" = 0 ]; then

@@ -100,7 +100,7 @@ print("%.4f %.4f %d" % (m["e_ang"], m["e_l2"], m["flipped"]))' "$json"
   fi
 }
 
-SHREC="$(cd "$ROOT/.." && pwd)/shared/data/shrec07-fourleg"
+. "$ROOT/bench/manifest.sh"
 mkdir -p "$OUT"
 CSV="$OUT/renumber_$STAGE.csv"
 echo "pair,method,map,max_moved,median_moved,e_ang,e_ang_renumbered,e_l2,e_l2_renumbered,flipped,flipped_renumbered" >"$CSV"
@@ -109,15 +109,8 @@ echo "|---|---|---|---|---|---|---|"
 while read -r name s t sa ta; do
   case "$name" in "" | \#*) continue ;; esac
   if [ -n "${PAIRS:-}" ] && [[ " $PAIRS " != *" $name "* ]]; then continue; fi
-  files=()
-  for f in "$s" "$t" "$sa" "$ta"; do
-    f="${f/\$SHREC/$SHREC}"
-    [[ "$f" = /* ]] || f="$ROOT/$f"
-    files+=("$f")
-  done
-  missing=0
-  for f in "${files[@]}"; do [ -f "$f" ] || missing=1; done
-  [ "$missing" = 0 ] || { echo "| $name | skipped: input missing | | | | | |"; continue; }
+  manifest_pair "$s" "$t" "$sa" "$ta" || { echo "| $name | skipped: input missing | | | | | |"; continue; }
+  files=("${FILES[@]}")
   rm -rf "$WORK/r" && mkdir -p "$WORK/r"
   renumber "${files[0]}" "${files[2]}" "$WORK/r"
   ra=("$WORK"/r/anchors.*)
