@@ -206,7 +206,12 @@ def md_renumber():
                                  f"{float(r['e_ang']):.4f} / {float(r['e_ang_renumbered']):.4f} | "
                                  f"{float(r['e_l2']):.4f} / {float(r['e_l2_renumbered']):.4f} | "
                                  f"{r['flipped']} / {r['flipped_renumbered']} |")
-    return '\n'.join(lines)
+    ran = {k: {p for (p, _, m) in got if m == k} for k, _ in stages[1:]}
+    note = ''
+    if ran['optimize'] and ran['optimize'] != ran['untangle']:
+        note = (f"\n\nThe optimize stage ran on {len(ran['optimize'])} of the {len(ran['untangle'])} pairs "
+                f"(`PAIRS=\"{' '.join(p for p in pairs if p in ran['optimize'])}\" bench/renumber.sh -- --map-stage optimize`).")
+    return '\n'.join(lines) + note
 
 def md_sensitivity():
     """Greedy against Voronoi C over the rounds of path straightening: the default (ROUNDS) and the
@@ -462,9 +467,10 @@ themselves.
 The same pairs with the source's vertices and faces renumbered (a seeded shuffle; the mesh and
 its anchors are otherwise the same), run by `bench/renumber.sh` through `cbd map`. A move is the
 distance between a source vertex's images in the two runs, as a fraction of the target's
-bounding-box diagonal. The composed map moves where rounding in the straightening's and the
-patch maps' solves tips a discrete choice (a path snapped onto a vertex or not); the map stages
-after it then end at other local minima, so their numbers move more than the composed map does.
+bounding-box diagonal. The composed map moves only where rounding that differs with the
+numbering tips one of the layouts' or the straightening's discrete choices (where a path runs,
+whether it snaps onto a vertex); the map stages after it end at other local minima, and the
+polish visits the vertices in index order, so their numbers move more than the composed map's.
 
 {md_renumber()}
 
