@@ -471,6 +471,7 @@ bounding-box diagonal. The composed map moves only where rounding that differs w
 numbering tips one of the layouts' or the straightening's discrete choices (where a path runs,
 whether it snaps onto a vertex); the map stages after it end at other local minima, and the
 polish visits the vertices in index order, so their numbers move more than the composed map's.
+Moves and metrics only: no timings.
 
 {md_renumber()}
 
