@@ -404,7 +404,7 @@ bash bench/run.sh
 ```
 
 (`--quick` for fewer scaling points and stress sets, one polish order, and none of the
-straightening sensitivity, the regions and the path flipping). Inputs: `bench/manifest.txt` (real pairs
+straightening sensitivity, the regions, the path flipping and the renumbering). Inputs: `bench/manifest.txt` (real pairs
 only: the bundled cow/bull in both directions, {shrec_note}, and pairs of Debian libcgal-demo meshes with the anchors in
 `bench/anchors/`). Every method runs on the same input in the same invocation; each run is a
 forked child process, so its peak resident memory (`getrusage`) is its own. Methods: **greedy**
