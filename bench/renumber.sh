@@ -89,7 +89,7 @@ print('%.2e %.2e' % (d[-1], d[len(d) // 2]))
 PY
 }
 
-# run JSON OUTDIR args...: "e_ang e_l2 flipped" or "fail STATUS".
+# run JSON OUTDIR args...: "e_ang e_l2 flipped", or "fail" when cbd map fails.
 run() {
   local json="$1" out="$2"; shift 2
   if "$CBD" map "$@" --out "$out" --json "$json" >/dev/null 2>&1; then
