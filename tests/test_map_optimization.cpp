@@ -108,6 +108,26 @@ TEST(MapOptimization, RecoversAKnownSmoothCorrespondence) {
   EXPECT_LT(sum / p.source.vertexCount(), 0.01 * boundingBoxDiagonal(p.target));
 }
 
+TEST(MapOptimization, SaysWhyItStoppedAndCallsOnlyAWholeLastStepConverged) {
+  const fx::AnchoredPair p = fx::anchoredSpheres(20, bumpy);
+  CrossParameterizationOptions o;
+  o.mapStage = MapStage::Optimize;
+  o.optimization.maxIterations = 1;
+  const CrossParameterizationResult capped =
+      crossParameterize(p.source, p.sourceAnchors, p.target, p.targetAnchors, 2, o);
+  ASSERT_TRUE(capped.status.ok()) << capped.status.message;
+  EXPECT_EQ(capped.optimization.stop, MapOptimizationStop::MaxIterations);
+  EXPECT_EQ(capped.optimization.iterations, 1);
+  EXPECT_FALSE(capped.optimization.converged);
+  const CrossParameterizationResult r = optimized(p);
+  ASSERT_TRUE(r.status.ok()) << r.status.message;
+  EXPECT_LE(r.optimization.boundedSteps, r.optimization.iterations);
+  // On a smooth pair Newton's last step is whole: the stop on tolerance is a minimum.
+  EXPECT_EQ(r.optimization.stop, MapOptimizationStop::Tolerance);
+  EXPECT_LT(r.optimization.boundedSteps, r.optimization.iterations);
+  EXPECT_TRUE(r.optimization.converged);
+}
+
 TEST(MapOptimization, CancelsWhenTheCallbackSaysStop) {
   const fx::AnchoredPair p = fx::anchoredSpheres(12, bumpy);
   CrossParameterizationOptions o;

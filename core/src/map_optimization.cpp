@@ -273,6 +273,7 @@ class Optimizer {
   std::vector<DomainPoint> pt;
   std::vector<SurfaceInDomain::Hit> hit;
   std::vector<std::array<ChartMap, 3>> chart;
+  bool lastBounded = false;  ///< the last line search started below the full step, at the injectivity bound
 
  private:
   /// The Hessian's pattern over the free vertices (lower triangle and every diagonal entry) and,
@@ -345,6 +346,7 @@ class Optimizer {
     std::vector<ChartMap> back(pt.size());
     std::vector<SurfaceInDomain::Hit> trialHit(hit);
     std::vector<Vec2> xt = positions();
+    lastBounded = 0.9 * tmax < 1.0;
     for (double t = std::min(1.0, 0.9 * tmax); t > 1e-12 * std::min(1.0, tmax); t *= 0.5) {
       bool ok = true;
       for (size_t v = 0; v < pt.size() && ok; ++v) {
@@ -405,18 +407,23 @@ CrossMap optimizeCrossMap(const IndexedMesh& S, const IndexedMesh& T, const Surf
   if (!opt.locateAll()) return fail(ErrorCode::InternalError, "a point of the base domain is on no target face");
   double E = opt.energy(opt.positions(), opt.hit);
   r.energyBefore = E;
+  r.stop = MapOptimizationStop::MaxIterations;
   while (r.iterations < o.maxIterations) {
     const double before = E;
     const Optimizer::Step s = opt.step(E);
     if (s == Optimizer::Step::None) {
-      r.converged = true;  // no step lowers the energy at this precision
+      r.stop = MapOptimizationStop::NoDescent;
       break;
     }
     ++r.iterations;
+    r.boundedSteps += opt.lastBounded;
     if (!progress.report(r.iterations / (r.iterations + 20.0), "optimizing the map"))
       return fail(ErrorCode::Cancelled, "cancelled while optimizing the map");
     if (s == Optimizer::Step::Newton && before - E < o.tolerance * before) {
-      r.converged = true;
+      r.stop = MapOptimizationStop::Tolerance;
+      // A small decrease after a step the bound cut short says the descent is held up by a face
+      // about to degenerate, not that the gradient vanishes.
+      r.converged = !opt.lastBounded;
       break;
     }
   }

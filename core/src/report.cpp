@@ -33,6 +33,16 @@ Json pairInputJson(const InputReport& r, Json& j) {
 
 const char* plural(int n) { return n == 1 ? "" : "s"; }
 
+/// `MapOptimizationStop` as the JSON report and the log spell it.
+const char* optimizationStopName(MapOptimizationStop s) {
+  switch (s) {
+    case MapOptimizationStop::Tolerance: return "tolerance";
+    case MapOptimizationStop::NoDescent: return "no_descent";
+    case MapOptimizationStop::MaxIterations: return "max_iterations";
+  }
+  return "unknown";
+}
+
 }  // namespace
 
 std::string fixed(double value, int digits) { return format("%.*f", digits, value); }
@@ -183,8 +193,10 @@ Json mapJobJson(const MapJob& job, const MapJobResult& out) {
                       {"flipped_after", r.smoothing.flippedAfter}};
   if (o.untangle && o.mapStage == MapStage::Optimize) {
     const auto& p = r.optimization;
-    j["optimize"] = {{"iterations", p.iterations},      {"converged", p.converged},  {"energy_before", p.energyBefore},
-                     {"energy_after", p.energyAfter}, {"injective", p.injective}};
+    j["optimize"] = {{"iterations", p.iterations},      {"stop", optimizationStopName(p.stop)},
+                     {"bounded_steps", p.boundedSteps}, {"converged", p.converged},
+                     {"energy_before", p.energyBefore}, {"energy_after", p.energyAfter},
+                     {"injective", p.injective}};
   } else if (o.untangle) {
     const auto &u = r.untangleSource, &w = r.untangleTarget;
     j["untangle"] = {{"flipped_before", u.flippedBefore},         {"flipped_after", u.flippedAfter},
@@ -288,8 +300,11 @@ std::vector<std::string> mapLines(const CrossParameterizationResult& r, const Cr
     lines.push_back(format("composed E_ang %.4f, E_L2 %.4f, %d flipped (the map before untangling)",
                            r.composedMetrics.eAng, r.composedMetrics.eL2, r.composedMetrics.flipped));
   if (o.untangle && o.mapStage == MapStage::Optimize) {
-    std::string line = format("optimize %d iterations%s, injective in the base domain", r.optimization.iterations,
-                              r.optimization.converged ? "" : " (not converged)");
+    const auto& p = r.optimization;
+    std::string line = format("optimize %d iterations (stopped on %s, %d cut short by the injectivity bound%s), "
+                              "injective in the base domain",
+                              p.iterations, optimizationStopName(p.stop), p.boundedSteps,
+                              p.converged ? "" : ": not converged");
     if (inverse) line += format("; M_ts (its inverse): %d flipped", inverse->flipped);
     lines.push_back(line);
   } else if (o.untangle) {

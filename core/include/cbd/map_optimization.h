@@ -26,7 +26,9 @@
 ///   is a bijection of the source onto the target through D (`injective`);
 /// - M_ts is its exact inverse: every target vertex's point of D located among the source's faces;
 /// - it stops when a Newton iteration lowers the energy by less than `tolerance` of itself, when
-///   no step lowers it at all, or after `maxIterations` (`converged` false);
+///   no step lowers it at all, or after `maxIterations` (`stop` says which); `converged` only when
+///   that last Newton step was not cut short by the injectivity bound (`boundedSteps` counts the
+///   iterations that were: a descent whose every step is cut stalls, see docs/algorithm.md);
 /// - it does not keep the image triangles of M_st from facing away from the target (the
 ///   metrics' `flipped`): see README's known limitations;
 /// - errors: Cancelled (the progress callback said stop), InternalError (a broken invariant).
@@ -51,11 +53,23 @@ struct MapOptimizationOptions {
   int threads = 0;          ///< worker threads for the per-face terms; 0: one per hardware thread
 };
 
+/// Why `optimizeCrossMap` stopped.
+enum class MapOptimizationStop {
+  Tolerance,      ///< a Newton iteration lowered the energy by less than `tolerance` of itself
+  NoDescent,      ///< no step (Newton's, with kinks held, or a scaled gradient) lowered it at all
+  MaxIterations,  ///< `maxIterations` reached
+};
+
 /// What `optimizeCrossMap` did and found.
 struct MapOptimizationResult {
   Status status;
-  int iterations = 0;         ///< Newton iterations
-  bool converged = false;     ///< stopped on `tolerance` or for want of a descent step
+  int iterations = 0;  ///< Newton iterations
+  MapOptimizationStop stop = MapOptimizationStop::MaxIterations;
+  /// Iterations whose step the injectivity bound cut short of the full step (Newton's 1, or the
+  /// gradient's): while it holds every step, the descent loses Newton's fast local convergence.
+  int boundedSteps = 0;
+  /// Stopped on `tolerance` after a step the bound left whole: a minimum, not a stall.
+  bool converged = false;
   double energyBefore = 0.0;  ///< of the composed map
   double energyAfter = 0.0;
   bool injective = false;     ///< every face positive in D and the areas summing to D's
