@@ -301,10 +301,12 @@ std::vector<std::string> mapLines(const CrossParameterizationResult& r, const Cr
                            r.composedMetrics.eAng, r.composedMetrics.eL2, r.composedMetrics.flipped));
   if (o.untangle && o.mapStage == MapStage::Optimize) {
     const auto& p = r.optimization;
-    std::string line = format("optimize %d iterations (stopped on %s, %d cut short by the injectivity bound%s), "
+    const char* why = p.stop == MapOptimizationStop::Tolerance   ? "on the tolerance"
+                      : p.stop == MapOptimizationStop::NoDescent ? "for want of a descent step"
+                                                                 : "at the iteration cap";
+    std::string line = format("optimize %d iterations (stopped %s, %d cut short by the injectivity bound%s), "
                               "injective in the base domain",
-                              p.iterations, optimizationStopName(p.stop), p.boundedSteps,
-                              p.converged ? "" : ": not converged");
+                              p.iterations, why, p.boundedSteps, p.converged ? "" : ": not converged");
     if (inverse) line += format("; M_ts (its inverse): %d flipped", inverse->flipped);
     lines.push_back(line);
   } else if (o.untangle) {
