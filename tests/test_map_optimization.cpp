@@ -61,6 +61,10 @@ TEST(MapOptimization, IsInjectiveInTheDomainAndLowersTheEnergy) {
   EXPECT_GT(r.optimization.iterations, 0);
   EXPECT_LT(r.optimization.energyAfter, r.optimization.energyBefore);
   EXPECT_TRUE(std::isfinite(r.optimization.energyAfter));
+  // On a smooth pair Newton's last step is whole: the stop on tolerance is a minimum.
+  EXPECT_EQ(r.optimization.stop, MapOptimizationStop::Tolerance);
+  EXPECT_LT(r.optimization.boundedSteps, r.optimization.iterations);
+  EXPECT_TRUE(r.optimization.converged);
   EXPECT_TRUE(std::isfinite(r.metrics.eL2) && std::isfinite(r.metrics.eAng));
   EXPECT_EQ(r.metrics.degenerate, 0);
   // Anchors map onto anchors.
@@ -108,7 +112,7 @@ TEST(MapOptimization, RecoversAKnownSmoothCorrespondence) {
   EXPECT_LT(sum / p.source.vertexCount(), 0.01 * boundingBoxDiagonal(p.target));
 }
 
-TEST(MapOptimization, SaysWhyItStoppedAndCallsOnlyAWholeLastStepConverged) {
+TEST(MapOptimization, SaysItStoppedAtTheCapWithoutConverging) {
   const fx::AnchoredPair p = fx::anchoredSpheres(20, bumpy);
   CrossParameterizationOptions o;
   o.mapStage = MapStage::Optimize;
@@ -119,13 +123,6 @@ TEST(MapOptimization, SaysWhyItStoppedAndCallsOnlyAWholeLastStepConverged) {
   EXPECT_EQ(capped.optimization.stop, MapOptimizationStop::MaxIterations);
   EXPECT_EQ(capped.optimization.iterations, 1);
   EXPECT_FALSE(capped.optimization.converged);
-  const CrossParameterizationResult r = optimized(p);
-  ASSERT_TRUE(r.status.ok()) << r.status.message;
-  EXPECT_LE(r.optimization.boundedSteps, r.optimization.iterations);
-  // On a smooth pair Newton's last step is whole: the stop on tolerance is a minimum.
-  EXPECT_EQ(r.optimization.stop, MapOptimizationStop::Tolerance);
-  EXPECT_LT(r.optimization.boundedSteps, r.optimization.iterations);
-  EXPECT_TRUE(r.optimization.converged);
 }
 
 TEST(MapOptimization, CancelsWhenTheCallbackSaysStop) {

@@ -407,7 +407,6 @@ CrossMap optimizeCrossMap(const IndexedMesh& S, const IndexedMesh& T, const Surf
   if (!opt.locateAll()) return fail(ErrorCode::InternalError, "a point of the base domain is on no target face");
   double E = opt.energy(opt.positions(), opt.hit);
   r.energyBefore = E;
-  r.stop = MapOptimizationStop::MaxIterations;
   while (r.iterations < o.maxIterations) {
     const double before = E;
     const Optimizer::Step s = opt.step(E);

@@ -33,14 +33,18 @@ Json pairInputJson(const InputReport& r, Json& j) {
 
 const char* plural(int n) { return n == 1 ? "" : "s"; }
 
-/// `MapOptimizationStop` as the JSON report and the log spell it.
-const char* optimizationStopName(MapOptimizationStop s) {
+/// `MapOptimizationStop` as the JSON report names it and as the log says it.
+struct StopText {
+  const char* name;
+  const char* words;
+};
+StopText optimizationStopText(MapOptimizationStop s) {
   switch (s) {
-    case MapOptimizationStop::Tolerance: return "tolerance";
-    case MapOptimizationStop::NoDescent: return "no_descent";
-    case MapOptimizationStop::MaxIterations: return "max_iterations";
+    case MapOptimizationStop::Tolerance: return {"tolerance", "on the tolerance"};
+    case MapOptimizationStop::NoDescent: return {"no_descent", "for want of a descent step"};
+    case MapOptimizationStop::MaxIterations: return {"max_iterations", "at the iteration cap"};
   }
-  return "unknown";
+  return {"unknown", "for an unknown reason"};
 }
 
 }  // namespace
@@ -193,7 +197,7 @@ Json mapJobJson(const MapJob& job, const MapJobResult& out) {
                       {"flipped_after", r.smoothing.flippedAfter}};
   if (o.untangle && o.mapStage == MapStage::Optimize) {
     const auto& p = r.optimization;
-    j["optimize"] = {{"iterations", p.iterations},      {"stop", optimizationStopName(p.stop)},
+    j["optimize"] = {{"iterations", p.iterations},      {"stop", optimizationStopText(p.stop).name},
                      {"bounded_steps", p.boundedSteps}, {"converged", p.converged},
                      {"energy_before", p.energyBefore}, {"energy_after", p.energyAfter},
                      {"injective", p.injective}};
@@ -301,12 +305,10 @@ std::vector<std::string> mapLines(const CrossParameterizationResult& r, const Cr
                            r.composedMetrics.eAng, r.composedMetrics.eL2, r.composedMetrics.flipped));
   if (o.untangle && o.mapStage == MapStage::Optimize) {
     const auto& p = r.optimization;
-    const char* why = p.stop == MapOptimizationStop::Tolerance   ? "on the tolerance"
-                      : p.stop == MapOptimizationStop::NoDescent ? "for want of a descent step"
-                                                                 : "at the iteration cap";
     std::string line = format("optimize %d iterations (stopped %s, %d cut short by the injectivity bound%s), "
                               "injective in the base domain",
-                              p.iterations, why, p.boundedSteps, p.converged ? "" : ": not converged");
+                              p.iterations, optimizationStopText(p.stop).words, p.boundedSteps,
+                              p.converged ? "" : ": not converged");
     if (inverse) line += format("; M_ts (its inverse): %d flipped", inverse->flipped);
     lines.push_back(line);
   } else if (o.untangle) {
