@@ -1,6 +1,7 @@
 #include "cbd/layout.h"
 
 #include <algorithm>
+#include <cmath>
 #include <functional>
 #include <limits>
 #include <queue>
@@ -470,6 +471,29 @@ int RegionDistances::deepest() const {
   int best = -1;
   for (size_t k = 0; k < vertices.size(); ++k)
     if (best < 0 || toBoundary[k] > toBoundary[best]) best = static_cast<int>(k);
+  return best;
+}
+
+std::vector<int> matchingRegionVertices(const RegionDistances& source, int s, const RegionDistances& target,
+                                        int count) {
+  const auto at = std::find(source.vertices.begin(), source.vertices.end(), s);
+  if (at == source.vertices.end() || target.vertices.empty() || source.sides != target.sides || count < 1) return {};
+  const size_t k = static_cast<size_t>(at - source.vertices.begin());
+  const double depthS = source.toBoundary[static_cast<size_t>(source.deepest())];
+  const double depthT = target.toBoundary[static_cast<size_t>(target.deepest())];
+  std::vector<std::pair<double, int>> cost(target.vertices.size());
+  for (size_t v = 0; v < target.vertices.size(); ++v) {
+    double c = 0;
+    for (size_t j = 0; j < source.sides.size(); ++j) {
+      const double x = source.toSide[k][j] / depthS, y = target.toSide[v][j] / depthT;
+      c += std::isfinite(x) && std::isfinite(y) ? (x - y) * (x - y) : std::isfinite(x) || std::isfinite(y) ? 1e6 : 0.0;
+    }
+    cost[v] = {c, target.vertices[v]};
+  }
+  const size_t n = std::min(cost.size(), static_cast<size_t>(count));
+  std::partial_sort(cost.begin(), cost.begin() + static_cast<std::ptrdiff_t>(n), cost.end());
+  std::vector<int> best(n);
+  for (size_t i = 0; i < n; ++i) best[i] = cost[i].second;
   return best;
 }
 

@@ -47,60 +47,103 @@ LayoutPair voronoiLayouts(const IndexedMesh& from, const std::vector<int>& fa, c
   TargetLayoutOptions to;
   to.edgeNodes = options.edgeNodes;
   to.anchorNames = options.anchorNames;
-  // Where the source layout gets stuck, an anchor pair is added there (anchor_pairs.h) and both
-  // layouts are built again with it, up to the cap.
+  // Where the source layout gets stuck, or the target's at a handle, an anchor pair is added
+  // there (anchor_pairs.h, target_layout.h) and both layouts are built again with it, up to the
+  // cap.
   const int genus = (2 - euler) / 2;
   const int maxPairs = options.maxAnchorPairs >= 0 ? options.maxAnchorPairs : 4 * genus + 2;
   std::vector<int> sourceAnchors = fa, targetAnchors = ta;
-  for (;;) {
-    p.sourceStats = buildSourceLayout(from, sourceAnchors, so, progress.part(0.0, ontoIsFrom ? 1.0 : 0.5));
-    p.times.voronoi += p.sourceStats.voronoiSeconds;
-    p.times.sourceLayout += p.sourceStats.layoutSeconds;
-    if (p.sourceStats.status || !p.sourceStats.stuck || static_cast<int>(p.addedAnchors.size()) >= maxPairs) break;
-    AnchorPairResult pair;
-    if (ontoIsFrom) {
-      pair.sourceVertex = pair.targetVertex = p.sourceStats.stuckVertex;
-      if (pair.sourceVertex < 0) break;
-    } else {
-      AnchorPairOptions ao;
-      ao.target = to;
-      const auto t0 = std::chrono::steady_clock::now();
-      pair = placeAnchorPair(p.sourceStats, onto, targetAnchors, ao, progress.quiet());
-      p.times.targetLayout += seconds(t0);
-      if (!pair.status) return p.status = pair.status, p;  // cancelled, or no pair to add
-    }
-    p.addedAnchors.push_back({pair.sourceVertex, pair.targetVertex});
-    sourceAnchors.push_back(pair.sourceVertex);
-    targetAnchors.push_back(pair.targetVertex);
+  auto addPair = [&](int sourceVertex, int targetVertex) {
+    p.addedAnchors.push_back({sourceVertex, targetVertex});
+    sourceAnchors.push_back(sourceVertex);
+    targetAnchors.push_back(targetVertex);
     if (!options.anchorNames.empty()) {
       so.anchorNames.push_back(addedAnchorName(static_cast<int>(p.addedAnchors.size()) - 1));
       to.anchorNames = so.anchorNames;
     }
-  }
-  if (!p.sourceStats.status) {
-    p.status = p.sourceStats.status;
+  };
+  auto full = [&] { return static_cast<int>(p.addedAnchors.size()) >= maxPairs; };
+  // The last pair added where the target layout got stuck at a handle, and the candidates for its
+  // target vertex (target_layout.h), best placed first.
+  size_t handlePair = 0;
+  std::vector<int> handleCandidates;
+  auto failedAfterPairs = [&](const Status& status) {
+    p.status = status;
     if (!p.addedAnchors.empty())
       p.status.message += " (after adding " + std::to_string(p.addedAnchors.size()) + " anchor pairs" +
-                          (static_cast<int>(p.addedAnchors.size()) >= maxPairs ? ", the most allowed)" : ")");
+                          (full() ? ", the most allowed)" : ")");
     return p;
+  };
+  for (;;) {
+    for (;;) {
+      p.sourceStats = buildSourceLayout(from, sourceAnchors, so, progress.part(0.0, ontoIsFrom ? 1.0 : 0.5));
+      p.times.voronoi += p.sourceStats.voronoiSeconds;
+      p.times.sourceLayout += p.sourceStats.layoutSeconds;
+      if (p.sourceStats.status || !p.sourceStats.stuck || full()) break;
+      AnchorPairResult pair;
+      if (ontoIsFrom) {
+        pair.sourceVertex = pair.targetVertex = p.sourceStats.stuckVertex;
+        if (pair.sourceVertex < 0) break;
+      } else {
+        AnchorPairOptions ao;
+        ao.target = to;
+        const auto t0 = std::chrono::steady_clock::now();
+        pair = placeAnchorPair(p.sourceStats, onto, targetAnchors, ao, progress.quiet());
+        p.times.targetLayout += seconds(t0);
+        if (!pair.status) return p.status = pair.status, p;  // cancelled, or no pair to add
+      }
+      addPair(pair.sourceVertex, pair.targetVertex);
+    }
+    if (!p.sourceStats.status) return failedAfterPairs(p.sourceStats.status);
+    if (const LayoutCheck c = validateLayout(p.sourceStats.layout, euler); !c.status) return p.status = c.status, p;
+    if (ontoIsFrom) {
+      p.source = std::move(p.sourceStats.layout);
+      p.target = p.source;
+      p.sameSurface = true;
+      return p;
+    }
+    // On a surface with handles Procedure 1's order may complete a layout whose paths wind round
+    // a handle; the source's order then detours less (target_layout.h). Genus 0 keeps Procedure 1.
+    TargetLayoutOptions tracing = to;
+    if (euler < 2) tracing.order = TargetLayoutOptions::Order::Shorter;
+    p.targetStats = buildTargetLayout(p.sourceStats.layout, onto, targetAnchors, tracing, progress.part(0.5, 1.0));
+    p.times.voronoi += p.targetStats.voronoiSeconds;
+    p.times.targetLayout += p.targetStats.layoutSeconds;
+    if (p.targetStats.status) break;
+    // Stuck where a source path runs round a handle no target path passes the same way: an
+    // anchor pair at that handle, placed alike in the two partial layouts' matching regions,
+    // gives the paths a corner there (as for a stuck source layout), and both are built again.
+    const TargetLayoutResult& t = p.targetStats;
+    if (t.status.code != ErrorCode::LayoutFailed || t.handleSourceVertex < 0 || t.handleTargetVertices.empty() || full())
+      return failedAfterPairs(t.status);
+    handlePair = p.addedAnchors.size();
+    handleCandidates = t.handleTargetVertices;
+    addPair(t.handleSourceVertex, handleCandidates[0]);
   }
-  if (const LayoutCheck c = validateLayout(p.sourceStats.layout, euler); !c.status) return p.status = c.status, p;
-  if (ontoIsFrom) {
-    p.source = std::move(p.sourceStats.layout);
-    p.target = p.source;
-    p.sameSurface = true;
-    return p;
+  p.detour = lengthDetour(p.sourceStats.layout, p.targetStats.layout);
+  // The pair's target vertex placed alike relative to the region's sides can sit on the wrong
+  // side of a thin part, and the paths then wind round it: while the layout detours more than
+  // `detourWarning`, the runners-up are tried in turn (the source layout stays as it is) and the
+  // layout that detours least is kept.
+  for (size_t k = 1; k < handleCandidates.size() && p.detour > options.detourWarning; ++k) {
+    std::vector<int> anchors = targetAnchors;
+    anchors[ta.size() + handlePair] = handleCandidates[k];
+    TargetLayoutOptions tracing = to;
+    tracing.order = TargetLayoutOptions::Order::Shorter;
+    TargetLayoutResult other = buildTargetLayout(p.sourceStats.layout, onto, anchors, tracing, progress.quiet());
+    p.times.voronoi += other.voronoiSeconds;
+    p.times.targetLayout += other.layoutSeconds;
+    if (other.status.code == ErrorCode::Cancelled) return p.status = other.status, p;
+    if (!other.status) continue;
+    if (const double d = lengthDetour(p.sourceStats.layout, other.layout); d < p.detour) {
+      p.detour = d;
+      p.targetStats = std::move(other);
+      targetAnchors = anchors;
+      p.addedAnchors[handlePair].second = handleCandidates[k];
+    }
   }
-  // On a surface with handles Procedure 1's order may complete a layout whose paths wind round
-  // a handle; the source's order then detours less (target_layout.h). Genus 0 keeps Procedure 1.
-  if (euler < 2) to.order = TargetLayoutOptions::Order::Shorter;
-  p.targetStats = buildTargetLayout(p.sourceStats.layout, onto, targetAnchors, to, progress.part(0.5, 1.0));
-  p.times.voronoi += p.targetStats.voronoiSeconds;
-  p.times.targetLayout += p.targetStats.layoutSeconds;
-  if (!p.targetStats.status) return p.status = p.targetStats.status, p;
   p.source = std::move(p.sourceStats.layout);
   p.target = std::move(p.targetStats.layout);
-  p.detour = lengthDetour(p.source, p.target);
   return p;
 }
 

@@ -107,6 +107,24 @@ int handleVertex(const RefinedMesh& m, const std::vector<int>& label, int region
   return vertex;
 }
 
+/// Candidates for the target vertex of an anchor pair at source vertex `s` (off every path of the
+/// source's partial layout, `srcPartial`): in the target's partial layout (`tgtPartial`) the
+/// region whose signature is that of the region of `s`, which the blocking rule keeps alike on
+/// both surfaces, and in it the vertices placed most alike relative to the region's sides
+/// (matchingRegionVertices), best first. Empty when there is no such region or vertex.
+std::vector<int> matchingHandleVertices(const Layout& src, const std::vector<int>& srcPartial,
+                                        const std::vector<int>& srcAnchorOf, const Layout& tgt,
+                                        const std::vector<int>& tgtPartial, int s) {
+  Layout a = src, b = tgt;  // copies of both meshes, made once, when the layout is stuck
+  a.edgePath = srcPartial;
+  b.edgePath = tgtPartial;
+  RegionScratch scratch;
+  const auto sig = regionSignaturesAt(a.mesh, a.edgePath, srcAnchorOf, a.edges, {a.mesh.face(a.mesh.outgoing(s))}, scratch);
+  RegionDistances ds, dt;
+  if (sig.size() != 1 || !regionDistances(a, sig[0], ds) || !regionDistances(b, sig[0], dt)) return {};
+  return matchingRegionVertices(ds, s, dt, kHandleCandidates);
+}
+
 }  // namespace
 
 Status checkIsomorphic(const Layout& s, const Layout& t) {
@@ -605,6 +623,7 @@ TargetLayoutResult traceTarget(const Layout& src, const IndexedMesh& target, con
           char where[96];
           std::snprintf(where, sizeof where, "vertex %d (%.6g %.6g %.6g)", s, x.x(), x.y(), x.z());
           r.handleSourceVertex = s;
+          r.handleTargetVertices = matchingHandleVertices(src, srcPartial, srcAnchorOf, L, tracer.edgePath(), s);
           r.status.message += "; the source's path runs round a handle there, smaller than the anchor spacing, near source " +
                               std::string(where) + ": an anchor pair there (on both surfaces) gives the paths a corner at it";
         }
@@ -667,6 +686,10 @@ TargetLayoutResult buildTargetLayout(const Layout& src, const IndexedMesh& targe
   second.layoutSeconds += first.layoutSeconds;
   if (!first.status) {
     second.procedure1Failure = first.status.message;
+    if (second.status.code == ErrorCode::LayoutFailed && second.handleSourceVertex < 0) {
+      second.handleSourceVertex = first.handleSourceVertex;
+      second.handleTargetVertices = first.handleTargetVertices;
+    }
     if (second.status.code == ErrorCode::LayoutFailed)
       second.status.message = "the target layout cannot be completed, neither in Procedure 1's order (" +
                               first.status.message + ") nor in the source's (" + second.status.message + ")" + advice;

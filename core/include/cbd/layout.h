@@ -255,6 +255,15 @@ struct RegionDistances {
 /// that signature.
 bool regionDistances(const Layout& layout, const RegionSignature& region, RegionDistances& out);
 
+/// The vertices of the `target` region whose distances to the region's sides, each over the
+/// region's depth, are nearest (least squares) to those of input vertex `s` of the `source`
+/// region, at most `count`, best first: two regions bounded by the same paths, so this places a
+/// point alike relative to them, where the deepest point alone could jump across a handle. The
+/// distances cannot tell the two sides of a thin part apart, hence the runners-up. Empty when `s`
+/// is not in `source`, the target region has no vertex off its boundary, or the sides differ.
+std::vector<int> matchingRegionVertices(const RegionDistances& source, int s, const RegionDistances& target,
+                                        int count);
+
 /// Assemble `layout.patches`, `layout.rotation` and `layout.facePatch` from the paths cut into
 /// `layout.mesh` (`layout.edgePath` set). InternalError if a region is not a triangle.
 Status assemblePatches(Layout& layout);

@@ -52,10 +52,13 @@ struct CrossParameterizationOptions {
   /// When the layouts kept detour more than this (`LayoutPair::detour`), `LayoutPair::warnings`
   /// says the anchors may not correspond in shape: corresponding anchors give detours well below
   /// it, anchors swapped left for right above it (test_pipeline checks both on the bundled
-  /// pair). 0: never.
+  /// pair). 0: never. Also where an anchor pair is added at a handle the target layout got stuck
+  /// at: while the layout detours more than this, the pair's other candidate target vertices are
+  /// tried (target_layout.h, `handleTargetVertices`); 0: all of them.
   double detourWarning = 1.8;
   /// Voronoi method: where the source layout gets stuck in a region no path can split (a handle
-  /// smaller than the anchor spacing), add an anchor pair there (anchor_pairs.h) and build both
+  /// smaller than the anchor spacing; anchor_pairs.h), or the target layout at a handle no target
+  /// path passes as the source's does (target_layout.h), add an anchor pair there and build both
   /// layouts again, at most this many times; -1: 4 x genus + 2; 0: never (the layout fails).
   int maxAnchorPairs = -1;
   /// Voronoi method: the greedy baseline's path flipping (`flipLayoutPaths`) applied to its

@@ -75,6 +75,9 @@ struct TargetLayoutOptions {
   Order order = Order::Procedure1ThenSource;
 };
 
+/// How many candidates `TargetLayoutResult::handleTargetVertices` offers.
+constexpr int kHandleCandidates = 8;
+
 /// Result of `buildTargetLayout`.
 struct TargetLayoutResult {
   Status status;                  ///< LayoutFailed names the edge and the reason
@@ -95,6 +98,11 @@ struct TargetLayoutResult {
   /// the shortest loop of a homology basis of the region, by tree-cotree), which the message
   /// names: an anchor pair there lets the layouts pass the handle. -1 otherwise.
   int handleSourceVertex = -1;
+  /// With `handleSourceVertex`, candidates for its counterpart, best first (at most
+  /// `kHandleCandidates`): in the region of the target's partial layout that matches the source
+  /// vertex's region (same boundary paths, anchors and topology), the input vertices placed most
+  /// alike relative to its sides. Empty when there are none.
+  std::vector<int> handleTargetVertices;
   double voronoiSeconds = 0.0;
   double layoutSeconds = 0.0;
 };
