@@ -313,23 +313,37 @@ TEST(TargetLayoutOnRealMeshes, StuckProcedure1FallsBackToTheSourceOrder) {
 
 TEST(TargetLayoutOnRealMeshes, StuckAtAHandlePlacesAnAnchorPairThereAndTheLayoutsComplete) {
   // turbine.off onto its warped copy, sampling 11: in both orders a source path runs round a
-  // handle of its region that no target path passes. The pipeline adds an anchor pair at a source
-  // vertex of that handle, its counterpart found in the target's matching region, and both
-  // layouts complete. The warp keeps vertex numbers, so the counterpart must be that vertex of
-  // the copy or beside it; the best-placed candidate sits across the blade from it (the paths
-  // would wind round the blade) and the layout that detours least is kept.
+  // handle of its region that no target path passes. The warp keeps vertex numbers, so the true
+  // counterpart of the source vertex the error names is that vertex of the copy: it must be among
+  // the candidates, though the best-placed one sits across the blade from it. The pipeline adds
+  // the pair and both layouts complete, with the counterpart or a vertex beside it (the layout
+  // that detours least is kept; from the best-placed candidate the paths wind round the blade).
   const IndexedMesh s = fx::readMeshOrEmpty(std::string(CBD_CGAL_MESHES) + "/turbine.off");
   if (s.vertexCount() == 0) GTEST_SKIP() << "scripts/setup.sh unpacks " << CBD_CGAL_MESHES;
   const IndexedMesh t = fx::warpedCopy(s);
   const int chi = validateMesh(s, "turbine").eulerCharacteristic;
   const std::vector<int> a = farthestPointSampling(s, 12, 11);
+  // Stuck: the error names the source vertex at the handle, and its true counterpart is among
+  // the candidates.
+  const SourceLayoutResult src = buildSourceLayout(s, a);
+  ASSERT_TRUE(src.status.ok()) << src.status.message;
+  const TargetLayoutResult stuck = buildTargetLayout(src.layout, t, a);
+  ASSERT_EQ(stuck.status.code, ErrorCode::LayoutFailed) << stuck.status.message;
+  const int h = stuck.handleSourceVertex;
+  ASSERT_GE(h, 0) << stuck.status.message;
+  EXPECT_EQ(std::find(a.begin(), a.end(), h), a.end());
+  EXPECT_NE(stuck.status.message.find("near source vertex " + std::to_string(h) + " ("), std::string::npos)
+      << stuck.status.message;
+  const std::vector<int>& candidates = stuck.handleTargetVertices;
+  EXPECT_EQ(candidates.size(), static_cast<size_t>(kHandleCandidates));
+  EXPECT_NE(std::find(candidates.begin(), candidates.end(), h), candidates.end());
   const CrossParameterizationOptions options;
   const LayoutPair p = buildLayouts(s, a, t, a, chi, options);
   ASSERT_TRUE(p.status.ok()) << p.status.message;
   EXPECT_FALSE(p.reversed);
   ASSERT_EQ(p.addedAnchors.size(), 1u);
   const auto [v, w] = p.addedAnchors[0];
-  EXPECT_EQ(std::find(a.begin(), a.end(), v), a.end());
+  EXPECT_EQ(v, h);
   EXPECT_LT((t.positions[w] - t.positions[v]).norm(), 0.01 * boundingBoxDiagonal(t)) << v << " / " << w;
   EXPECT_TRUE(validateLayout(p.target, chi).status.ok());
   EXPECT_TRUE(checkIsomorphic(p.source, p.target).ok());
