@@ -226,7 +226,8 @@ LayoutPair buildLayouts(const IndexedMesh& source, const std::vector<int>& sa, c
               (p.sameSurface ? std::string() : " / " + std::to_string(p.addedAnchors[k].second));
     p.warnings.push_back(std::to_string(p.addedAnchors.size()) + (p.sameSurface ? " anchor" : " anchor pair") +
                          (p.addedAnchors.size() == 1 ? " was" : "s were") +
-                         " added where no path could split a region (a handle smaller than the anchor spacing): " +
+                         " added at handles smaller than the anchor spacing (where no path could split a region, or no "
+                         "target path passed a handle as the source's did): " +
                          list + (p.sameSurface ? "" : " (source / target)") +
                          "; the untangling may move their images (the experimental optimization keeps them): give "
                          "anchors there to choose their places");
