@@ -67,6 +67,17 @@ LayoutPair voronoiLayouts(const IndexedMesh& from, const std::vector<int>& fa, c
   // target vertex (target_layout.h), best placed first.
   size_t handlePair = 0;
   std::vector<int> handleCandidates;
+  // The target layout from the source's, with these target anchors, its times counted. On a
+  // surface with handles Procedure 1's order may complete a layout whose paths wind round a
+  // handle; the source's order then detours less (target_layout.h). Genus 0 keeps Procedure 1.
+  auto traceTarget = [&](const std::vector<int>& anchors, const Progress& part) {
+    TargetLayoutOptions tracing = to;
+    if (euler < 2) tracing.order = TargetLayoutOptions::Order::Shorter;
+    TargetLayoutResult t = buildTargetLayout(p.sourceStats.layout, onto, anchors, tracing, part);
+    p.times.voronoi += t.voronoiSeconds;
+    p.times.targetLayout += t.layoutSeconds;
+    return t;
+  };
   auto failedAfterPairs = [&](const Status& status) {
     p.status = status;
     if (!p.addedAnchors.empty())
@@ -102,13 +113,7 @@ LayoutPair voronoiLayouts(const IndexedMesh& from, const std::vector<int>& fa, c
       p.sameSurface = true;
       return p;
     }
-    // On a surface with handles Procedure 1's order may complete a layout whose paths wind round
-    // a handle; the source's order then detours less (target_layout.h). Genus 0 keeps Procedure 1.
-    TargetLayoutOptions tracing = to;
-    if (euler < 2) tracing.order = TargetLayoutOptions::Order::Shorter;
-    p.targetStats = buildTargetLayout(p.sourceStats.layout, onto, targetAnchors, tracing, progress.part(0.5, 1.0));
-    p.times.voronoi += p.targetStats.voronoiSeconds;
-    p.times.targetLayout += p.targetStats.layoutSeconds;
+    p.targetStats = traceTarget(targetAnchors, progress.part(0.5, 1.0));
     if (p.targetStats.status) break;
     // Stuck where a source path runs round a handle no target path passes the same way: an
     // anchor pair at that handle, placed alike in the two partial layouts' matching regions,
@@ -128,11 +133,7 @@ LayoutPair voronoiLayouts(const IndexedMesh& from, const std::vector<int>& fa, c
   for (size_t k = 1; k < handleCandidates.size() && p.detour > options.detourWarning; ++k) {
     std::vector<int> anchors = targetAnchors;
     anchors[ta.size() + handlePair] = handleCandidates[k];
-    TargetLayoutOptions tracing = to;
-    tracing.order = TargetLayoutOptions::Order::Shorter;
-    TargetLayoutResult other = buildTargetLayout(p.sourceStats.layout, onto, anchors, tracing, progress.quiet());
-    p.times.voronoi += other.voronoiSeconds;
-    p.times.targetLayout += other.layoutSeconds;
+    TargetLayoutResult other = traceTarget(anchors, progress.quiet());
     if (other.status.code == ErrorCode::Cancelled) return p.status = other.status, p;
     if (!other.status) continue;
     if (const double d = lengthDetour(p.sourceStats.layout, other.layout); d < p.detour) {
